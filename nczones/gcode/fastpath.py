@@ -291,6 +291,9 @@ def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -
             number = _last_word(code, lo, hi, ord(letter), alone=letter == "M")
             if number is not None:
                 last[letter] = number
+        alone = _last_word(code, lo, hi, ord("N"), alone=True)
+        if alone is not None and alone != last.get("N"):  # the last N is a line's alone (FanucRunner.number_alone)
+            last["N*"] = (alone, last.get("N"))
 
 
 def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int,

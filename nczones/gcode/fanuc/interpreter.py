@@ -244,7 +244,7 @@ class FanucInterpreter(Interpreter):
         self._first_after_transform = False  # the first move after G68/G69, G51/G50, ... must be absolute
         self.vars: FanucVariables | None = None
         self.clock = {3001: (0.0, _ZERO), 3002: (0.0, _ZERO)}
-        self.last: dict[str, Fraction] = {}  # the last D, M, N words, for #4107 ...
+        self.last: dict[str, Any] = {}  # the last D, M, N words, for #4107 ... (and "N*": number_alone)
         self._harmless_m = HARMLESS_M | machine.fanuc.harmless_m
         self.recompute_offsets()
 

@@ -418,6 +418,20 @@ class FanucRunner:
             source, pos, lineno, entry)
 
     def make_op(self, source: _Source, pos: int, lineno: int, compiled: tuple) -> Callable[[], Any] | None:
+        """:meth:`make_op_of`'s closure; for a line with an N and no NC word, one that first records the N as
+        :meth:`execute` does (:meth:`number_alone`)."""
+        op = self.make_op_of(source, pos, lineno, compiled)
+        fl = compiled[0]
+        if op is None or compiled[1] or fl.number is None:
+            return op
+        number, record = fl.number, self.number_alone
+
+        def numbered() -> Any:
+            record(number)
+            return op()
+        return numbered
+
+    def make_op_of(self, source: _Source, pos: int, lineno: int, compiled: tuple) -> Callable[[], Any] | None:
         fl, words, assigns, stmt, line, nxt, _gcodes, calls, plain, simple = compiled
         if fl.delete or fl.percent or fl.program is not None or fl.unmodelled is not None:
             return None
@@ -895,6 +909,8 @@ class FanucRunner:
         delete, number, letters, values = parsed
         here = (nxt, lineno + 1)
         if (delete and self.skips(1)) or not letters:
+            if number is not None and not (delete and self.skips(1)):
+                self.number_alone(number)
             return here
         self.started = self.ran = True
         span = make_span(source.file, lineno, 1, len(line) + 1, line)
@@ -930,6 +946,15 @@ class FanucRunner:
         if compiled[0].number is not None:
             self.lane_number(compiled[0].number)
         return here if taken == 1 else [here]
+
+    def number_alone(self, number: Fraction) -> None:
+        """A line with an N and no NC word (``N25`` alone, or with macro statements only: no block for this
+        reader), kept beside the last block's N as ``last["N*"] = (its N, the last block's N then)``: whether the
+        control's ``#4114`` then holds it is not settled, so a read where the two readings differ is unknown
+        (:func:`nczones.gcode.fanuc.system.read`)."""
+        last = getattr(self.state, "last", None)
+        if last is not None:
+            last["N*"] = (number, last.get("N"))
 
     def lane_number(self, number: Fraction) -> None:
         """The N of a block the plain-move lane took, kept as the general path's ``_record_block`` keeps it: the
@@ -1053,6 +1078,8 @@ class FanucRunner:
         if fl.unmodelled is not None:
             reason, col, end = fl.unmodelled
             raise self.unsupported(reason.split()[3], reason, lineno, line, col, end)
+        if not words and fl.number is not None:
+            self.number_alone(fl.number)
         if words and assigns:
             raise self.unsupported("macro", "an NC statement and a macro assignment in one block: Fanuc controls "
                                    "alarm (PS0114), Haas executes both; their order is not modelled",
@@ -1125,6 +1152,8 @@ class FanucRunner:
             reason, col, end = fl.unmodelled
             raise self.unsupported(reason.split()[3], reason, lineno, line, col, end)
         self.started = self.ran = True
+        if fl.number is not None:
+            self.number_alone(fl.number)
         for target, value, col, end in assigns:
             if self.assign(target, value, lineno, line, col, end, fl):
                 return None  # #3000 alarm

@@ -55,6 +55,7 @@ from .expr import VACANT, SystemVariableUnknown, round_to
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
+    from typing import Any
 
     from ...machine import FanucSettings
     from ...motion import Plane
@@ -103,7 +104,7 @@ class MacroState(Protocol):
     @property
     def prog(self) -> list[Fraction] | None: ...
     @property
-    def last(self) -> dict[str, Fraction]: ...
+    def last(self) -> dict[str, Any]: ...  # the last D F H M N T words (and "N*": FanucRunner.number_alone)
     @property
     def track(self) -> bool: ...
     @property
@@ -147,6 +148,18 @@ def _value(q: Fraction) -> tuple:
 
 def _unknown(n: int, why: str) -> SystemVariableUnknown:
     return SystemVariableUnknown(f"#{n}", why)
+
+
+def _alone(it: MacroState, n: int, last: Fraction | None) -> None:
+    """Unknown when ``#n`` (the last N) differs as a line with an N and no NC word counts or not: such a line
+    (``N25`` alone, a macro statement's label) is no block for this reader, and whether the control's last
+    sequence number then holds its N is not settled (``FanucRunner.number_alone`` keeps ``last["N*"]``: its N and
+    the block's N then; a later block changes the latter, and the two readings agree again)."""
+    alone = it.last.get("N*")
+    if alone is not None and alone[1] == last and alone[0] != last:
+        raise _unknown(n, f"#{n} after N{alone[0]} on a line without an NC word (a sequence number alone or a "
+                       f"macro statement's): whether the control's last sequence number is then {alone[0]} or "
+                       "the last block's is not settled; write the N in a block with an NC word")
 
 
 def _ranged(it: MacroState, n: int) -> None:
@@ -298,6 +311,8 @@ def read(it: MacroState, n: int) -> tuple:
         if letter == "P":
             return _value(Fraction(int(it.wcs[6:]))) if it.wcs.startswith("G54.1P") else VACANT
         last = it.last.get(letter)
+        if letter == "N":
+            _alone(it, n, last)
         return VACANT if last is None else _value(last)
     raise _unknown(n, f"system variable #{n} is not one nczones models (specs/fanuc.md lists those it does)")
 

@@ -169,3 +169,51 @@ def test_the_lanes_leave_what_the_general_path_leaves(monkeypatch, seed):
         text = (HEAD + "#1 = 0\n" + _random_blocks(r) + "G90 G17 G49\n"
                 + "".join(f"#7 = #{v}\nG01 X[#7 + 0.5] Y{k}. F100.\n" for k, v in enumerate(_READS)) + "M30\n")
         assert moves(text, True) == moves(text, False), text
+
+
+#: (a program's middle, what the move by #4114 must be: a number, or None for ``unknown``).  A line of its N alone
+#: (``N25``) is no block for nczones' reader, and no manual sentence at hand says whether the control's #4114 then
+#: holds 25 or the N before it: where the two readings differ the read is ``unknown`` (VF203's system-variable
+#: reason), where they agree it is modelled.
+ALONE = {
+    "an N alone after a numbered block": ("N10 G01 X1. Y1.\nN25\n", None),
+    "an N alone with a comment": ("N10 G01 X1. Y1.\nN25 (NEXT)\n", None),
+    "an N alone, the first N": ("G01 X1. Y1.\nN25\n", None),
+    "an N alone, then a numbered block": ("N10 G01 X1. Y1.\nN25\nN30 G01 X2. Y1.\n", 30),
+    "an N alone with the same number": ("N25 G01 X1. Y1.\nN25\n", 25),
+    "an N alone in a loop": ("#2 = 0\nWHILE [#2 LT 3] DO1\nN30 G01 X2. Y1.\nN35\n#2 = #2 + 1\nEND1\n", None),
+    "a macro statement's label": ("N10 G01 X1. Y1.\nN25 #1 = 2\n", None),
+    "a label, then a numbered block": ("N10 G01 X1. Y1.\nN25 #1 = 2\nN30 G01 X2. Y1.\n", 30),
+    # the third pass runs N100 and N300 as kept closures (FanucRunner.make_op) after a block (N250) the passes
+    # before did not run: the closures must record their N too
+    "labels run as closures": ("#2 = 0\nN100 #2 = #2 + 1\nIF [#2 EQ 3] GOTO250\nN200 G01 X1. Y1.\nGOTO300\n"
+                               "N250 G01 X2. Y1.\nN300 #3 = 1\nIF [#2 LT 3] GOTO100\n", None),
+}
+
+
+def _alone_read(text: str, fast: bool) -> Fraction | None:
+    from nczones.gcode import interpret_text
+
+    run = interpret_text(text, mill(), file="t.nc", fast=fast)
+    ends = [s.end for s in run.segments()]
+    if run.unsupported:
+        assert run.unsupported[0].code == "#4114" and "not settled" in run.unsupported[0].reason, run.unsupported
+        return None
+    return ends[-1][0] - 100 - Fraction(1, 2)
+
+
+@pytest.mark.parametrize("fast", [True, False])
+@pytest.mark.parametrize("name", sorted(ALONE))
+def test_a_line_of_its_n_alone_makes_the_read_unknown_where_it_matters(name, fast):
+    middle, n = ALONE[name]
+    assert _alone_read(HEAD + middle + TAIL, fast) == n, name
+
+
+@pytest.mark.parametrize("fast", [True, False])
+@pytest.mark.parametrize("alone", [True, False])
+def test_a_vectorized_run_with_an_n_alone(fast, alone):
+    """A numbered run long enough for the vectorized fast path whose last numbered line is an N alone: the read is
+    unknown on every path; with the N alone earlier in the run it is the last block's N."""
+    body = "".join(f"N{k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 1201))
+    text = HEAD + "#1 = 0\n" + (body + "N1500\n" if alone else "N1500\n" + body) + TAIL
+    assert _alone_read(text, fast) == (None if alone else 1200)
