@@ -287,13 +287,16 @@ def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -
     sets #4113: hunt41), an N alone is not."""
     last = getattr(it, "last", None) if getattr(it, "keeps_number", False) else None
     if last is not None:
-        for letter in ("N", "M"):
-            number = _last_word(code, lo, hi, ord(letter), alone=letter == "M")
+        m = _last_word(code, lo, hi, ord("M"), alone=True)
+        if m is not None:
+            last["M"] = m
+        alone = _last_word(code, lo, hi, ord("N"), alone=True)  # in any line: None when the lines have no N
+        if alone is not None:
+            number = _last_word(code, lo, hi, ord("N"))
             if number is not None:
-                last[letter] = number
-        alone = _last_word(code, lo, hi, ord("N"), alone=True)
-        if alone is not None and alone != last.get("N"):  # the last N is a line's alone (FanucRunner.number_alone)
-            last["N*"] = (alone, last.get("N"))
+                last["N"] = number
+            if alone != last.get("N"):  # the last N is a line's alone (FanucRunner.number_alone)
+                last["N*"] = (alone, last.get("N"))
 
 
 def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int,
