@@ -656,7 +656,8 @@ class CornerCheck:
             self._naive_close()
         nv.add(seg)
         pending = nv.pending
-        while pending and (pending[0][3] // NAIVE_CHAIN + 2) * NAIVE_CHAIN <= nv.count:  # nv.ready(), inline
+        # the first waiting block's last forward window complete (its block and the next one read)
+        while pending and (pending[0][3] // NAIVE_CHAIN + 2) * NAIVE_CHAIN <= nv.count:
             self._naive_block(nv.take())
 
     def _naive_close(self) -> None:
@@ -1564,10 +1565,6 @@ class _NaiveWindows:
                 self.boxes.clear()
             box = self.boxes[k] = _piece_box(self.segs[k % self.KEEP])  # type: ignore[arg-type]
             return box
-
-    def ready(self) -> bool:
-        """Is the first waiting block of corners' last forward window complete?"""
-        return bool(self.pending) and (self.pending[0][3] // NAIVE_CHAIN + 2) * NAIVE_CHAIN <= self.count
 
     def take(self) -> list[tuple[Segment, Segment, PathMode, int]]:
         """The waiting corners of the first waiting block, removed from the queue."""
