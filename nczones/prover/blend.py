@@ -89,6 +89,9 @@ BLEND_FRACTION = Fraction(1, 2)
 #: LinuxCNC's naive-CAM chain (``G64 Q``) holds at most this many points (``emccanon.cc`` ``linkable``: a chain of
 #: more than 100 points takes no more): one merged line spans at most this many programmed motions.
 NAIVE_CHAIN = 101
+#: G64 Q without P: prove the corners a block of NAIVE_CHAIN motions at a time first (False: each corner alone,
+#: the reference the agreement tests compare with).
+NAIVE_BLOCKS = True
 
 F0 = Fraction(0)
 Box = tuple[tuple[Fraction, ...], tuple[Fraction, ...]]
@@ -241,6 +244,7 @@ class CornerCheck:
         # parameter ranges move positions by at most their size, each on its own axis (G54.X, home.X, start.X:
         # X; H: the tool axis; any other name: every axis): the boxes grow by that much there
         self.widen_axis = _range_widening(ranges, machine.axis_names, machine.allowed.tool_axis)
+        self.widens = any(self.widen_axis.values())
         self.modes = modes
         self.zones = self.allowed.zones
         # the axes some zone constrains: screening boxes are computed on them only (others stay 0)
@@ -646,20 +650,42 @@ class CornerCheck:
         return self.naive.active
 
     def _naive_track(self, seg: Segment, joined: bool) -> None:
-        """Keep ``seg``'s box in the run's window; prove the corners whose forward window is complete."""
+        """Keep ``seg`` in the run's window; prove the block of corners whose forward windows are complete."""
         nv = self.naive
         if not joined:
             self._naive_close()
-        nv.add(_piece_box(seg))
-        while nv.pending and nv.pending[0][3] + NAIVE_CHAIN < nv.count:
-            self._naive_corner(*nv.pending.pop(0))
+        nv.add(seg)
+        pending = nv.pending
+        # the first waiting block's last forward window complete (its block and the next one read)
+        while pending and (pending[0][3] // NAIVE_CHAIN + 2) * NAIVE_CHAIN <= nv.count:
+            self._naive_block(nv.take())
 
     def _naive_close(self) -> None:
         """The run ended (an exact stop, a dwell, the end): prove its waiting corners, start a new window."""
         nv = self.naive
         while nv.pending:
-            self._naive_corner(*nv.pending.pop(0))
+            self._naive_block(nv.take())
         nv.restart()
+
+    def _naive_block(self, group: list[tuple[Segment, Segment, PathMode, int]]) -> None:
+        """The corners of one block of NAIVE_CHAIN motions (G64 Q without P): one box for all of them first
+        (:meth:`_NaiveWindows.block_region`, a superset of each one's region), each one alone
+        (:meth:`_naive_corner`) only when that box does not fit.  The box is tested at every tool length and
+        tip offset of the block's motions: each corner's own test is one of those."""
+        region = self.naive.block_region(group[0][3] // NAIVE_CHAIN) if NAIVE_BLOCKS else None
+        if region is not None and all(b.start is a.end or b.start == a.end for a, b, _m, _i in group):
+            t0 = group[0][0].tool_length
+            tls: Iterable[Any] = (t0,)
+            if not all((a.tool_length is t0 or a.tool_length == t0) and (b.tool_length is t0 or b.tool_length == t0)
+                       for a, b, _m, _i in group):
+                tls = {x.tool_length for a, b, _m, _i in group for x in (a, b)}
+            self._shifts = (frozenset(self._shift(x) for a, b, _m, _i in group for x in (a, b))
+                            if self.has_tip_zones else _NO_SHIFT)
+            if self._fits(region, tls, F0):
+                self.corners += len(group)
+                return
+        for corner in group:
+            self._naive_corner(*corner)
 
     def _naive_corner(self, a: Segment, b: Segment, mode: PathMode, ia: int) -> None:
         """The corner after motion ``ia`` of the run in G64 Q without P (specs/path-modes.md §2): the planner
@@ -856,8 +882,11 @@ class CornerCheck:
     def _fits(self, box: Box, tls: Iterable[Fraction], extra: Fraction, zone: int | None = None) -> bool:
         self.tests += 1
         w = self.widen_axis
-        lo = {a: x - w[a] for a, x in zip(self.axes, box[0])}
-        hi = {a: x + w[a] for a, x in zip(self.axes, box[1])}
+        if self.widens:
+            lo = {a: x - w[a] for a, x in zip(self.axes, box[0])}
+            hi = {a: x + w[a] for a, x in zip(self.axes, box[1])}
+        else:  # no parameter range: the same values without the Fraction operations
+            lo, hi = dict(zip(self.axes, box[0])), dict(zip(self.axes, box[1]))
         return all(box_fits(allowed, lo, hi, self.margin + extra, tl,
                             allowed.zones if zone is None else (allowed.zones[zone],))
                    for allowed in self._allowed_sets() for tl in set(tls))
@@ -1461,39 +1490,128 @@ def _naive_only(mode: PathMode) -> bool:
 
 
 class _NaiveWindows:
-    """The boxes of a run's last motions, for G64 Q without P: by motion, united per group of SMALL motions (an
-    exact window is its whole groups and the motions at its two ends), and per block of NAIVE_CHAIN motions (a
-    window of NAIVE_CHAIN motions touches at most two blocks: the quick, coarser test)."""
+    """The motions of a run's last windows, for G64 Q without P (specs/path-modes.md §2).
+
+    Kept per motion (the motions themselves; their boxes, :func:`_piece_box`, computed when a corner is proved
+    alone), and per block of NAIVE_CHAIN motions the box of the block's motions, grown as they come: a window
+    of NAIVE_CHAIN motions touches at most two blocks.  A corner alone is proved first with the blocks its two
+    windows touch, then exactly, with the boxes of whole groups of SMALL motions (united when first asked: a
+    group is complete by then) and of the single motions at the windows' ends.
+
+    The corners are proved a block at a time (:meth:`block_region`): the corners after motions
+    ``k N .. (k + 1) N - 1`` (``N`` = NAIVE_CHAIN) wait until motion ``(k + 2) N - 1`` is read (the last one's
+    forward window is then complete) or the run ends.
+    """
 
     SMALL = 10
+    #: motions kept (a ring): a corner's windows reach at most 2 NAIVE_CHAIN - 1 motions back from the newest
+    KEEP = 3 * NAIVE_CHAIN
 
     def __init__(self) -> None:
         self.active = False
         self.pending: list[tuple[Segment, Segment, PathMode, int]] = []  # (a, b, mode, index of a)
         self.count = 0  # motions seen (absolute index of the next one)
         self.first = 0  # the run's first motion
-        self.boxes: dict[int, Box | None] = {}
-        self.small: dict[int, Box | None] = {}
-        self.blocks: dict[int, Box | None] = {}
+        self.segs: list[Segment | None] = [None] * self.KEEP  # motion k at k % KEEP
+        self.boxes: dict[int, Box | None] = {}  # the boxes of motions asked (emptied when large)
+        self.small: dict[int, Box | None] = {}  # the boxes of complete groups asked (emptied when large)
+        self.blocks: dict[int, list[list[Any]] | None] = {}  # [lo, hi] of the block's motions, grown in place
+        self._block: list[list[Any]] | None = None  # the newest block's entry
+        self._end: Any = None  # the end point of the last straight motion added (the next one may start there)
 
     def restart(self) -> None:
         self.first = self.count
         self.boxes.clear()
         self.small.clear()
         self.blocks.clear()
+        self._end = None
 
-    def add(self, box: Box | None) -> None:
+    def add(self, seg: Segment) -> None:
+        """Motion ``count`` of the run: kept, and its block's box grown to hold it (a straight motion from where
+        the last one ended: by its end point alone, its start is in the box already)."""
         k = self.count
-        self.boxes[k] = box
-        self.boxes.pop(k - 3 * NAIVE_CHAIN, None)
-        for table, size in ((self.small, self.SMALL), (self.blocks, NAIVE_CHAIN)):
-            g = k // size
-            if g in table:
-                table[g] = _union(table[g], box)
+        self.segs[k % self.KEEP] = seg
+        self.count = k + 1
+        if k % NAIVE_CHAIN == 0 or k == self.first:  # a new block (the run's first one may start inside one)
+            self.blocks.pop(k // NAIVE_CHAIN - 4, None)
+            box = self.box(k)
+            self._block = self.blocks[k // NAIVE_CHAIN] = None if box is None else [list(box[0]), list(box[1])]
+        elif (blk := self._block) is not None:
+            if seg.kind is _LINE or seg.kind is _RAPID:
+                lo, hi = blk
+                if seg.start is not self._end:
+                    _grow_point(blk, seg.start)
+                for i, x in enumerate(seg.end):
+                    if _lt(x, lo[i]):
+                        lo[i] = x
+                    elif _lt(hi[i], x):
+                        hi[i] = x
             else:
-                table[g] = box
-                table.pop(g - 3 * NAIVE_CHAIN // size - 1, None)
-        self.count += 1
+                box = self.box(k)
+                if box is None:
+                    self._block = self.blocks[k // NAIVE_CHAIN] = None
+                else:
+                    _grow(blk, box)
+        self._end = seg.end if seg.kind is _LINE or seg.kind is _RAPID else None
+
+    def box(self, k: int) -> Box | None:
+        """The box of motion ``k`` of the run (:func:`_piece_box`; None: it has none, or it is not kept)."""
+        try:
+            return self.boxes[k]
+        except KeyError:
+            if not (self.first <= k < self.count and k > self.count - self.KEEP):
+                return None
+            if len(self.boxes) > 4 * self.KEEP:
+                self.boxes.clear()
+            box = self.boxes[k] = _piece_box(self.segs[k % self.KEEP])  # type: ignore[arg-type]
+            return box
+
+    def take(self) -> list[tuple[Segment, Segment, PathMode, int]]:
+        """The waiting corners of the first waiting block, removed from the queue."""
+        pending = self.pending
+        k = pending[0][3] // NAIVE_CHAIN
+        m = 1
+        while m < len(pending) and pending[m][3] // NAIVE_CHAIN == k:
+            m += 1
+        group = pending[:m]
+        del pending[:m]
+        return group
+
+    def block_region(self, k: int) -> Box | None:
+        """A box holding the region of every corner after a motion of block ``k`` (None: a motion without a box).
+
+        Soundness.  The corner after motion ``i`` of the run (``k N <= i < (k + 1) N``, ``N`` = NAIVE_CHAIN) is
+        ``C``, the end of motion ``i``; its region (:meth:`region`, specs/path-modes.md §2) is the box of
+        ``x + y - C``, ``x`` in the box ``X`` of motions ``max(first, i - N + 1) .. i``, ``y`` in the box ``Y`` of
+        motions ``i + 1 .. min(count - 1, i + N)``.  Since ``i - N + 1 > (k - 1) N - 1`` and ``i + N < (k + 2) N``,
+        those motions lie in blocks ``k - 1 .. k`` (box ``U``) and ``k .. k + 1`` (box ``V``) of the run, as far as
+        it is read; ``C`` lies in block ``k`` (box ``B``).  So, axis by axis, ``X.lo + Y.lo - C >= U.lo + V.lo -
+        B.hi`` and ``X.hi + Y.hi - C <= U.hi + V.hi - B.lo``: that box holds every corner's region.  A block's box
+        holds the boxes of its motions (:func:`_piece_box`), as the corner's own test uses, so each corner's test
+        is on a box inside this one (at one of its tool lengths and offsets: :meth:`CornerCheck._naive_block`)."""
+        first, last = self.first // NAIVE_CHAIN, (self.count - 1) // NAIVE_CHAIN
+        blocks = self.blocks
+        own = blocks.get(k)
+        u = _union(blocks.get(k - 1), own) if k - 1 >= first else own  # type: ignore[arg-type]
+        v = _union(own, blocks.get(k + 1)) if k + 1 <= last else own  # type: ignore[arg-type]
+        if u is None or v is None or own is None:
+            return None
+        return (tuple(x + y - z for x, y, z in zip(u[0], v[0], own[1])),
+                tuple(x + y - z for x, y, z in zip(u[1], v[1], own[0])))
+
+    def _group(self, g: int) -> Box | None:
+        """The box of motions ``g SMALL .. (g + 1) SMALL - 1`` (a complete group of the run)."""
+        try:
+            return self.small[g]
+        except KeyError:
+            n = self.SMALL
+            out = self.box(g * n)
+            for k in range(g * n + 1, (g + 1) * n):
+                out = _union(out, self.box(k))
+            if len(self.small) > self.KEEP:
+                self.small.clear()
+            self.small[g] = out
+            return out
 
     def _span(self, lo: int, hi: int, exact: bool) -> Box | None:
         """A box holding motions ``lo .. hi - 1`` (all of the run): their union, or the union of their blocks."""
@@ -1501,12 +1619,12 @@ class _NaiveWindows:
             n = self.SMALL
             g0, g1 = -(-lo // n), hi // n  # the whole groups inside
             if g0 >= g1:
-                parts = [self.boxes.get(k) for k in range(lo, hi)]
+                parts = [self.box(k) for k in range(lo, hi)]
             else:
-                parts = ([self.boxes.get(k) for k in range(lo, g0 * n)] + [self.small.get(g) for g in range(g0, g1)]
-                         + [self.boxes.get(k) for k in range(g1 * n, hi)])
+                parts = ([self.box(k) for k in range(lo, g0 * n)] + [self._group(g) for g in range(g0, g1)]
+                         + [self.box(k) for k in range(g1 * n, hi)])
         else:
-            parts = [self.blocks.get(k) for k in range(lo // NAIVE_CHAIN, (hi - 1) // NAIVE_CHAIN + 1)]
+            parts = [self.blocks.get(k) for k in range(lo // NAIVE_CHAIN, (hi - 1) // NAIVE_CHAIN + 1)]  # type: ignore[misc]
         out: Box | None = parts[0] if parts else None
         for p in parts[1:]:
             out = _union(out, p)
