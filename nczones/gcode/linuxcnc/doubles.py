@@ -466,8 +466,9 @@ _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 #: Arcs the pass holds in lists before it moves them to its arrays (:meth:`_Pass.arc_flush`).
 _ARC_BUFFER = 4096
-#: Items of an arc's record in :attr:`_Pass.new_arcs`: its row, box (4), words (4) and plane slot.
-_ARC_ITEMS = 10
+#: Items of an arc's record in :attr:`_Pass.new_arcs`: its row, box (4) and words (4) (its plane's slot is the
+#: pass's: :meth:`_Pass.arc_in` moves the records to the arrays before it changes).
+_ARC_ITEMS = 9
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 #: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
@@ -705,7 +706,9 @@ class _Pass:
     def _straight(self, i: int, end: int) -> int:
         """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
         program ended.  A line whose layout has a step (``by_layout``) runs it on the literals its layout's
-        cutter takes out of it."""
+        cutter takes out of it; a line of a layout without one yet is stepped (:meth:`_step`) where it stands,
+        in the same walk of its piece (arc43: not a new slice of the rest of the piece at each new layout, some
+        2k instructions a line on CAM output with arcs)."""
         src, by_layout = self.src, self.by_layout
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
@@ -717,17 +720,18 @@ class _Pass:
                 for k, layout in enumerate(layouts[first:stop], first):
                     if layout != last:
                         got = by_layout.get(layout)
-                        if got is None:
-                            break
+                        if got is None:  # (its step is compiled now: the next line of its layout finds it)
+                            last = None
+                            fn, parts = self._step(k + lo)
+                            if fn is not None and fn(parts):
+                                return -1
+                            continue
                         step, cut = got
                         last = layout
                     if step(cut(lines[k])):
                         return -1
-                else:
-                    k = stop
-                i = k + lo
-                if i >= end or i >= hi:
-                    continue
+                i = stop + lo
+                continue
             fn, parts = self._step(i)
             i += 1
             if fn is not None and fn(parts):
@@ -1228,7 +1232,7 @@ class _Pass:
         #: per arc: its box's kind, R and 0 or I and J, the offsets' bound it was computed with (DoublePath.arc_more)
         self.arc_words = array("d")
         #: the same of the arcs since :meth:`arc_flush`, in one list, a record of :data:`_ARC_ITEMS` an arc (its
-        #: row, its box's four bounds, its four words, its plane's slot: one ``extend`` an arc, arc43): an
+        #: row, its box's four bounds, its four words: one ``extend`` an arc, arc43; all in :attr:`arc_slot`): an
         #: array's append and extend parse each item with ``PyArg_Parse`` (some 500 instructions, a tenth of a
         #: lathe program's pass); the arrays keep a window's arcs in a quarter of a list's memory
         self.new_arcs: list[Any] = []
@@ -1241,7 +1245,6 @@ class _Pass:
         new.append(row)
         new.extend(box)
         new.extend(words)
-        new.append(self.arc_slot)
         if len(new) >= _ARC_BUFFER * _ARC_ITEMS:
             self.arc_flush()
 
@@ -1260,7 +1263,7 @@ class _Pass:
             self.arc_rows.frombytes(_pack(f"{k}q", *new[0::w]))
             self.arc_boxes.frombytes(_pack(f"{4 * k}d", *boxes))
             self.arc_words.frombytes(_pack(f"{4 * k}d", *words))
-            self.arc_slots.frombytes(bytes(new[9::w]))
+            self.arc_slots.frombytes(bytes((self.arc_slot,)) * k)  # (every arc held is in it: arc_in)
             new.clear()
 
     def assume(self) -> None:
@@ -1282,6 +1285,7 @@ class _Pass:
     def arc_in(self, plane: int) -> None:
         """An arc in ``plane``, another than the last arc's: its plane's slot (a new pair of
         :attr:`DoublePath.arc_axes` for a plane met first) is the arcs' from it on (:attr:`DoublePath.arc_planes`)."""
+        self.arc_flush()  # the arcs held are in the slot before
         slot = self.plane_slots.get(plane)
         if slot is None:
             a, b, _words = _ARC_PLANES[plane]
@@ -1484,7 +1488,7 @@ class _Pass:
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "IJ_ARC": ij_check, "IOFFB": inch_offb,
                                  "AX": self.new_arcs.extend, "NEW": self.new_arcs,
-                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
+                                 "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
                                  "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc, "LV": self.cyc.lits,
                                  "W": None if self.cc is None else self.cc.words}
@@ -1672,7 +1676,7 @@ class _Pass:
 
         def record(xlo: str, xhi: str, ylo: str, yhi: str) -> list[str]:
             q = "0.0" if "R" in others else "q"
-            return [f"AX((st.row0 + n - 1, {xlo}, {xhi}, {ylo}, {yhi}, {kind}, p, {q}, ob, st.arc_slot))"]
+            return [f"AX((st.row0 + n - 1, {xlo}, {xhi}, {ylo}, {yhi}, {kind}, p, {q}, ob))"]
 
         if "R" in others:
             box = r_screen_code(ends, "p", "ob", "rel", record)
@@ -1680,16 +1684,23 @@ class _Pass:
             box = [f"box = IJ_ARC({', '.join(ends)}, p, q, mode == 2, oi, ru, {turn}, True)",  # (ij_screen's box)
                    "if box.__class__ is str: raise D(box)", *record("box[0]", "box[1]", "box[2]", "box[3]")]
         return [f"if st.arc_plane != {plane}: st.arc_in({plane})",
-                # (first a test tiny() implies, on each of the plane's axes: the motion's end sa (row -2) and start
-                # differ by LIM (plus twice a G91 chain's error, XERR) or more, and |sa| < 1e10, leave tiny()'s
-                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|, and likewise sb: most arcs follow a
-                # motion that is not short on one of them, an arc in another plane too)
-                f"if st.blend and n > 2 and (-(li := LIM + 2.0 * XERR[{ia}]) < sa - C{ia}[-3] < li "
-                "or not -1e10 < sa < 1e10) "
-                f"and (-(li := LIM + 2.0 * XERR[{ib}]) < sb - C{ib}[-3] < li or not -1e10 < sb < 1e10) "
+                # (first a test tiny() implies, on each of the plane's axes: _short)
+                f"if st.blend and n > 2 and ({self._short(ia, 'sa')}) and ({self._short(ib, 'sb')}) "
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
                 *box, f"if len(NEW) >= {_ARC_BUFFER * _ARC_ITEMS}: st.arc_flush()"]
+
+    def _short(self, i: int, s: str) -> str:
+        """The test, on axis ``i`` whose start is ``s``, that the blended-corner test of an arc makes before
+        ``tiny()``, which it implies: ``tiny()`` holds only if the motion before the arc, from row -3 to ``s`` (row
+        -2), is short on every axis.  When it differs by ``LIM`` plus twice a G91 chain's error (``XERR``) or more
+        and ``|s| < 1e10``, ``tiny()``'s bound there is below ``DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|``: most
+        arcs follow a motion that is not short on one of the plane's axes (an arc in another plane too).  The
+        limit is ``LIM`` (a literal) first: with no chain's error ``LIM + 2 XERR`` is ``LIM``, and with one it is
+        larger, so ``|t| < LIM`` implies ``|t| < LIM + 2 XERR`` (arc43: no sum an arc)."""
+        lim = 2 * (_DROPPED + self.tiny_pad) + 1e-4
+        return (f"-{lim!r} < (bt := {s} - C{i}[-3]) < {lim!r} or XERR[{i}] and -(li := {lim!r} + 2.0 * XERR[{i}]) "
+                f"< bt < li or not -1e10 < {s} < 1e10")
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
