@@ -466,8 +466,9 @@ _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 #: Arcs the pass holds in lists before it moves them to its arrays (:meth:`_Pass.arc_flush`).
 _ARC_BUFFER = 4096
-#: Items of an arc's record in :attr:`_Pass.new_arcs`: its row, box (4) and words (4) (its plane's slot is the
-#: pass's: :meth:`_Pass.arc_in` moves the records to the arrays before it changes).
+#: Items of an arc's record in :attr:`_Pass.new_arcs`: its row (counted from ``row0 - 1``: ``row0`` changes only
+#: in :meth:`_Pass.full`, after :meth:`_Pass._path` has moved the records), box (4) and words (4) (its plane's
+#: slot is the pass's: :meth:`_Pass.arc_in` moves the records to the arrays before it changes).
 _ARC_ITEMS = 9
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
@@ -1242,7 +1243,7 @@ class _Pass:
         kind, R and 0 or I and J, the offsets' bound: :attr:`DoublePath.arc_more`), in the plane of
         :meth:`arc_in`: what a plan's ``AX`` does (a compensation corner's, .double_comp)."""
         new = self.new_arcs
-        new.append(row)
+        new.append(row - self.row0 + 1)  # (_ARC_ITEMS)
         new.extend(box)
         new.extend(words)
         if len(new) >= _ARC_BUFFER * _ARC_ITEMS:
@@ -1260,7 +1261,7 @@ class _Pass:
             for j in range(4):
                 boxes[j::4] = new[1 + j::w]
                 words[j::4] = new[5 + j::w]
-            self.arc_rows.frombytes(_pack(f"{k}q", *new[0::w]))
+            self.arc_rows.frombytes(_pack(f"{k}q", *map((self.row0 - 1).__add__, new[0::w])))
             self.arc_boxes.frombytes(_pack(f"{4 * k}d", *boxes))
             self.arc_words.frombytes(_pack(f"{4 * k}d", *words))
             self.arc_slots.frombytes(bytes((self.arc_slot,)) * k)  # (every arc held is in it: arc_in)
@@ -1646,19 +1647,23 @@ class _Pass:
     def _arc_words(self, others: list[str], plane: int) -> tuple[list[str], list[str]]:
         """The code that sets an arc's words in mm (``p``, ``q``; an R arc: ``rel``, the bound of its radius's
         error, :func:`~.double_arcs.r_arc`; an I/J arc: ``oi``, ``ru``, the offsets' bound and rule it is checked
-        with) and ``fl``, its kind's G20 flag: on the common way (G21) and on the slow one (after the G91
-        chains have grown ``ob``, :meth:`_arc_plane_body`), where G20 scales them (a text that may write it)."""
+        with) and ``kd``, its kind (``double_arcs.refined``'s flags, G20's among them): on the common way (G21)
+        and on the slow one (after the G91 chains have grown ``ob``, :meth:`_arc_plane_body`), where G20 scales
+        them (a text that may write it)."""
         def val(x: str) -> str:
             return f"v[{others.index(x)}]" if x in others else "0.0"
 
+        a, b, (wa, wb) = _ARC_PLANES[plane]
+        turn = a not in others and b not in others  # the end is the start: a whole turn
+        flag = R_SCREEN if "R" in others else IJ_SCREEN | (TURN if turn else 0)
+        kind = f"kd = {float(flag | CW)} if mode == 2 else {float(flag)}"
         if "R" in others:  # R in G20: scaled, with double_arcs.R_INCH_REL for its error
-            common = [f"p = {val('R')}; rel = {2.0**-51!r}; fl = 0.0"]
-            inch = [f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; fl = {float(INCH_ARC)}"]
+            common = [f"p = {val('R')}; rel = {2.0**-51!r}; {kind}"]
+            inch = [f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; kd = kd + {float(INCH_ARC)}"]
         else:  # I/J in G20: scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
-            wa, wb = _ARC_PLANES[plane][2]
-            common = [f"p = {val(wa)}; q = {val(wb)}; oi = ob; ru = {self.rule!r}; fl = 0.0"]
+            common = [f"p = {val(wa)}; q = {val(wb)}; oi = ob; ru = {self.rule!r}; {kind}"]
             inch = [f"    p = p * {INCH!r}; q = q * {INCH!r}; oi = IOFFB(ob, p, q); ru = {inch_rule(self.rule)!r}; "
-                    f"fl = {float(INCH_ARC)}"]
+                    f"kd = kd + {float(INCH_ARC)}"]
         return common, [*common, "if st.inch:", *inch] if self.g20_text else common
 
     def _arc_body(self, others: list[str], plane: int, ends: tuple[str, str, str, str]) -> list[str]:
@@ -1671,12 +1676,10 @@ class _Pass:
         a, b, _words = _ARC_PLANES[plane]
         ia, ib = self.index[a], self.index[b]
         turn = a not in others and b not in others  # the end is the start: a whole turn
-        flag = R_SCREEN if "R" in others else IJ_SCREEN | (TURN if turn else 0)
-        kind = f"({float(flag | CW)} if mode == 2 else {float(flag)}) + fl"
 
         def record(xlo: str, xhi: str, ylo: str, yhi: str) -> list[str]:
             q = "0.0" if "R" in others else "q"
-            return [f"AX((st.row0 + n - 1, {xlo}, {xhi}, {ylo}, {yhi}, {kind}, p, {q}, ob))"]
+            return [f"AX((n, {xlo}, {xhi}, {ylo}, {yhi}, kd, p, {q}, ob))"]  # (n: _ARC_ITEMS)
 
         if "R" in others:
             box = r_screen_code(ends, "p", "ob", "rel", record)
