@@ -59,8 +59,8 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["R_INCH_REL", "chain_offb", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen",
-           "radius_rule", "refined", "sector_box"]
+__all__ = ["R_INCH_REL", "R_WHY", "chain_offb", "inch_offb", "inch_rule", "ij_arc", "ij_screen", "r_arc", "r_screen",
+           "r_screen_code", "radius_rule", "refined", "sector_box"]
 
 _U = 2.0**-52
 _TAU = 2.0 * math.pi
@@ -320,7 +320,7 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, 
     if not (dd > 17 * ed * ed and x > _HALF * rr
             and (ed * (l1 + ed) < _QUICK_X * rr
                  or x > 8 * (rr * rel + (l1 * ed + ed * ed + dd * _U) / 2 + (rr + dd) * _U))):
-        return "an R arc of a chord about 0 or about 2|R| or longer"
+        return R_WHY
     err = (64.0 * m + 0.0625) * _U
     if r > 0.0:
         w = l1 / 2 + err
@@ -335,6 +335,54 @@ def r_screen(sx: float, sy: float, ex: float, ey: float, r: float, offb: float, 
     if sy > ey:
         return (xlo, xhi, sy - w, ey + w)
     return (xlo, xhi, ey - w, sy + w)
+
+
+#: Why :func:`r_screen` (and its inline form, :func:`r_screen_code`) declines an arc.
+R_WHY = "an R arc of a chord about 0 or about 2|R| or longer"
+
+
+def r_screen_code(ends: tuple[str, str, str, str], r: str, offb: str, rel: str, emit: Any,
+                  fail: str = f"raise D({R_WHY!r})") -> list[str]:
+    """:func:`r_screen` as lines of source, which the double pass's plans run inline (arc43: no call of seven
+    arguments and no tuple an R arc): ``ends`` (``sx, sy, ex, ey``), ``r``, ``offb`` and ``rel`` are the sources
+    of its arguments (names: each is read more than once), ``fail`` the statement that declines, and
+    ``emit(xlo, xhi, ylo, yhi)`` the lines that keep the box from the sources of its four bounds.  The
+    temporaries' names start with ``r_``.
+
+    Every operation is :func:`r_screen`'s, on the same operands in the same order, so the box and the decline
+    are its own, bit for bit (its docstring holds for both), but for these, which give the same doubles: the
+    code branches on ``R > 0`` first (there ``|R|`` is ``R``), an ``int`` operand is the ``float`` of the same
+    value (``17 * e`` and ``17.0 * e`` round the same real number) and a division by 2 or 4 a product by 0.5
+    or 0.25 (both the correctly rounded value of the same real number, a power of two's scaling): the
+    interpreter's float fast paths take them (``tests/gcode/test_double_pass_arc43.py`` holds the two bit for
+    bit on random arcs, near half circles and tiny chords included, and shows a dropped term caught)."""
+    sx, sy, ex, ey = ends
+    u = repr(_U)
+
+    def screen(ar: str) -> list[str]:  # the decline test and err, with |R| written ar
+        return [
+            "r_l1 = r_ax + r_ay",
+            f"r_m = 2.0 * (({sx} if {sx} >= 0.0 else -{sx}) + ({sy} if {sy} >= 0.0 else -{sy}) + {ar}) + r_l1 + {offb}",
+            f"r_ed = (9.0 * r_m + {2.0**-7!r} + r_l1) * {u}",
+            "r_dd = r_dx * r_dx + r_dy * r_dy",
+            f"r_rr = {r} * {r}",
+            "r_x = r_rr - r_dd * 0.25",
+            f"if not (r_dd > 17.0 * r_ed * r_ed and r_x > {_HALF!r} * r_rr and (r_ed * (r_l1 + r_ed) < {_QUICK_X!r} "
+            f"* r_rr or r_x > 8.0 * (r_rr * {rel} + (r_l1 * r_ed + r_ed * r_ed + r_dd * {u}) * 0.5 + (r_rr + r_dd) "
+            f"* {u}))): {fail}",
+            f"r_err = (64.0 * r_m + 0.0625) * {u}"]
+
+    chord = [f"r_dx = {ex} - {sx}; r_dy = {ey} - {sy}",
+             "r_ax = r_dx if r_dx >= 0.0 else -r_dx; r_ay = r_dy if r_dy >= 0.0 else -r_dy"]
+    within = [*screen(r), f"r_w = r_l1 * 0.5 + r_err; r_mx = ({sx} + {ex}) * 0.5; r_my = ({sy} + {ey}) * 0.5",
+              *emit("r_mx - r_w", "r_mx + r_w", "r_my - r_w", "r_my + r_w")]
+    wide = [f"r_ar = {r} if {r} >= 0.0 else -{r}", *screen("r_ar"), "r_w = 2.0 * r_ar + r_err",
+            f"if {sx} > {ex}: r_xl = {sx} - r_w; r_xh = {ex} + r_w",
+            f"else: r_xl = {ex} - r_w; r_xh = {sx} + r_w",
+            f"if {sy} > {ey}: r_yl = {sy} - r_w; r_yh = {ey} + r_w",
+            f"else: r_yl = {ey} - r_w; r_yh = {sy} + r_w",
+            *emit("r_xl", "r_xh", "r_yl", "r_yh")]
+    return [*chord, f"if {r} > 0.0:", *(f"    {b}" for b in within), "else:", *(f"    {b}" for b in wide)]
 
 
 #: Arc kinds :func:`refined` reads (``DoublePath.arc_more``'s flags): the box is already :func:`r_arc`'s or

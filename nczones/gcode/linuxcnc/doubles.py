@@ -170,7 +170,7 @@ from .double_arcs import (
     ij_check,
     inch_offb,
     inch_rule,
-    r_screen,
+    r_screen_code,
     radius_rule,
     refined,
 )
@@ -466,6 +466,10 @@ _EPS2 = 2.0**-52  # twice the unit roundoff (_Pass._straight_ends)
 _DROPPED = float(DROPPED_BELOW) * 1.01 + 1e-12
 #: Arcs the pass holds in lists before it moves them to its arrays (:meth:`_Pass.arc_flush`).
 _ARC_BUFFER = 4096
+#: Items of an arc's record in :attr:`_Pass.new_arcs`: its row (counted from ``row0 - 1``: ``row0`` changes only
+#: in :meth:`_Pass.full`, after :meth:`_Pass._path` has moved the records), box (4) and words (4) (its plane's
+#: slot is the pass's: :meth:`_Pass.arc_in` moves the records to the arrays before it changes).
+_ARC_ITEMS = 9
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
 #: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
@@ -703,7 +707,9 @@ class _Pass:
     def _straight(self, i: int, end: int) -> int:
         """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
         program ended.  A line whose layout has a step (``by_layout``) runs it on the literals its layout's
-        cutter takes out of it."""
+        cutter takes out of it; a line of a layout without one yet is stepped (:meth:`_step`) where it stands,
+        in the same walk of its piece (arc43: not a new slice of the rest of the piece at each new layout, some
+        2k instructions a line on CAM output with arcs)."""
         src, by_layout = self.src, self.by_layout
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
@@ -715,17 +721,18 @@ class _Pass:
                 for k, layout in enumerate(layouts[first:stop], first):
                     if layout != last:
                         got = by_layout.get(layout)
-                        if got is None:
-                            break
+                        if got is None:  # (its step is compiled now: the next line of its layout finds it)
+                            last = None
+                            fn, parts = self._step(k + lo)
+                            if fn is not None and fn(parts):
+                                return -1
+                            continue
                         step, cut = got
                         last = layout
                     if step(cut(lines[k])):
                         return -1
-                else:
-                    k = stop
-                i = k + lo
-                if i >= end or i >= hi:
-                    continue
+                i = stop + lo
+                continue
             fn, parts = self._step(i)
             i += 1
             if fn is not None and fn(parts):
@@ -1225,36 +1232,40 @@ class _Pass:
         self.arc_boxes = array("d")  # per arc: xlo, xhi, ylo, yhi (DoublePath.arc_boxes)
         #: per arc: its box's kind, R and 0 or I and J, the offsets' bound it was computed with (DoublePath.arc_more)
         self.arc_words = array("d")
-        #: the same of the arcs since :meth:`arc_flush`, in lists: an array's append and extend parse each item
-        #: with ``PyArg_Parse`` (some 500 instructions, a tenth of a lathe program's pass); the arrays keep a
-        #: window's arcs in a quarter of a list's memory (the arcs' plane slots, one small item an arc, are
-        #: appended to :attr:`arc_slots` at once)
-        self.new_arcs: tuple[list[int], list[float], list[float]] = ([], [], [])
+        #: the same of the arcs since :meth:`arc_flush`, in one list, a record of :data:`_ARC_ITEMS` an arc (its
+        #: row, its box's four bounds, its four words: one ``extend`` an arc, arc43; all in :attr:`arc_slot`): an
+        #: array's append and extend parse each item with ``PyArg_Parse`` (some 500 instructions, a tenth of a
+        #: lathe program's pass); the arrays keep a window's arcs in a quarter of a list's memory
+        self.new_arcs: list[Any] = []
 
     def add_arc(self, row: int, box: Any, words: tuple[float, float, float, float]) -> None:
         """An arc ending at ``row`` (counted from the program's start) with its ``box`` and ``words`` (its box's
         kind, R and 0 or I and J, the offsets' bound: :attr:`DoublePath.arc_more`), in the plane of
-        :meth:`arc_in`: what a plan's ``AR``, ``AB``, ``AW`` and ``AS`` do (a compensation corner's, .double_comp)."""
-        rows, boxes, kept = self.new_arcs
-        rows.append(row)
-        boxes.extend(box)
-        kept.extend(words)
-        self.arc_slots.append(self.arc_slot)
-        if len(rows) >= _ARC_BUFFER:
+        :meth:`arc_in`: what a plan's ``AX`` does (a compensation corner's, .double_comp)."""
+        new = self.new_arcs
+        new.append(row - self.row0 + 1)  # (_ARC_ITEMS)
+        new.extend(box)
+        new.extend(words)
+        if len(new) >= _ARC_BUFFER * _ARC_ITEMS:
             self.arc_flush()
 
     def arc_flush(self) -> None:
-        """Move the arcs of :attr:`new_arcs` to the arrays (each list packed at once: no item parsed)."""
-        rows, boxes, words = self.new_arcs
-        if rows:
+        """Move the arcs of :attr:`new_arcs` to the arrays (their items gathered by strided slices, each array's
+        packed at once: no item parsed)."""
+        new = self.new_arcs
+        if new:
             from struct import pack as _pack  # (not at start-up: a program with arcs only)
 
-            self.arc_rows.frombytes(_pack(f"{len(rows)}q", *rows))
-            self.arc_boxes.frombytes(_pack(f"{len(boxes)}d", *boxes))
-            self.arc_words.frombytes(_pack(f"{len(words)}d", *words))
-            rows.clear()
-            boxes.clear()
-            words.clear()
+            k, w = len(new) // _ARC_ITEMS, _ARC_ITEMS
+            boxes, words = [0.0] * (4 * k), [0.0] * (4 * k)
+            for j in range(4):
+                boxes[j::4] = new[1 + j::w]
+                words[j::4] = new[5 + j::w]
+            self.arc_rows.frombytes(_pack(f"{k}q", *map((self.row0 - 1).__add__, new[0::w])))
+            self.arc_boxes.frombytes(_pack(f"{4 * k}d", *boxes))
+            self.arc_words.frombytes(_pack(f"{4 * k}d", *words))
+            self.arc_slots.frombytes(bytes((self.arc_slot,)) * k)  # (every arc held is in it: arc_in)
+            new.clear()
 
     def assume(self) -> None:
         """A motion while the units, distance mode or work offset are still the machine file's: the full path
@@ -1275,6 +1286,7 @@ class _Pass:
     def arc_in(self, plane: int) -> None:
         """An arc in ``plane``, another than the last arc's: its plane's slot (a new pair of
         :attr:`DoublePath.arc_axes` for a plane met first) is the arcs' from it on (:attr:`DoublePath.arc_planes`)."""
+        self.arc_flush()  # the arcs held are in the slot before
         slot = self.plane_slots.get(plane)
         if slot is None:
             a, b, _words = _ARC_PLANES[plane]
@@ -1475,11 +1487,9 @@ class _Pass:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
         lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
-                                 "FR": self.first_row, "R_ARC": r_screen, "IJ_ARC": ij_check,
-                                 "AR": self.new_arcs[0].append, "IOFFB": inch_offb, "AB": self.new_arcs[1].extend,
-                                 "AW": self.new_arcs[2].extend, "NA_ROWS": self.new_arcs[0],
-                                 "AS": self.arc_slots.append,
-                                 "LIM": 2 * (_DROPPED + self.tiny_pad) + 1e-4, "ERR": self.err, "XERR": self.xerr,
+                                 "FR": self.first_row, "IJ_ARC": ij_check, "IOFFB": inch_offb,
+                                 "AX": self.new_arcs.extend, "NEW": self.new_arcs,
+                                 "ERR": self.err, "XERR": self.xerr,
                                  "NA": math.nextafter, "INF": math.inf, "EPS2": _EPS2, "CY": self.cyc.run,
                                  "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc, "LV": self.cyc.lits,
                                  "W": None if self.cc is None else self.cc.words}
@@ -1599,10 +1609,19 @@ class _Pass:
         within ``2**-1075``: exact, ``t >= 2 a (1 - 2**-53) >= a``; ``t = 0``: ``s 2**-52 <= 2**-1075``, so ``a <
         2**-1075`` and ``e' >= e + 2**-1074 > e + a + 2**-1075``; else ``t >= 2**-1074``, which is ``>= a`` when
         ``a <= 2**-1074``, and otherwise ``t >= 2 a (1 - 2**-53) - 2**-1075 >= a``.  (Overflow: inf, a bound.)"""
+        g90, slow = self._ends(axes)
+        if slow is None:
+            return g90
+        # one test on the common way (G90 G21, no chain open: ``slow`` false)
+        return ["if st.slow:", *(f"    {b}" for b in slow), "else:", *(f"    {b}" for b in g90)]
+
+    def _ends(self, axes: list[tuple[int, int]]) -> tuple[list[str], list[str] | None]:
+        """:meth:`_straight_ends`'s two ways: the common one's code (G90 G21, no chain open) and the slow one's
+        (G91, G20 or a chain open: ``st.slow``; None when the text writes neither G91 nor G20)."""
         named = tuple(i for _k, i in axes)
         g90 = [f"pos[{i}] = x{i} = {self._word(k, i)} + off[{i}]" for k, i in axes]
         if not self.g91_text and not self.g20_text:  # no G91 nor G20 in the text (_modal_body): no chain
-            return g90
+            return g90, None
         inc = []
         for k, i in axes:
             w = self._word(k, i)
@@ -1612,11 +1631,8 @@ class _Pass:
         # G20 (:mod:`.double_units`) in a text that may write it: a branch of the slow way
         inch = ["if st.inch:", *(f"    {b}" for b in inch_ends(axes, self.offb2, named)), "el"] \
             if self.g20_text else [""]
-        # one test on the common way (G90 G21, no chain open: ``slow`` false)
-        return ["if st.slow:", *(f"    {b}" for b in inch[:-1]), f"    {inch[-1]}if st.inc:",
-                *(f"        {b}" for b in inc), "        st.chained = True",
-                "    else:", *(f"        {b}" for b in g90), f"        st.unchain({named!r})",
-                "else:", *(f"    {b}" for b in g90)]
+        return g90, [*inch[:-1], f"{inch[-1]}if st.inc:", *(f"    {b}" for b in inc), "    st.chained = True",
+                     "else:", *(f"    {b}" for b in g90), f"    st.unchain({named!r})"]
 
     def _word(self, k: int, i: int) -> str:
         """The source of the double of axis word ``v[k]`` (axis ``i``): an X word times ``st.half`` (G7 halves it,
@@ -1628,57 +1644,78 @@ class _Pass:
             return f"v[{k}]"
         return f"(v[{k}] * st.half)"
 
-    def _arc_body(self, others: list[str], plane: int) -> list[str]:
-        """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
-        first and second axes as the full path's ``Interpreter.arc``: G18's are Z and X, with K and I) from
-        ``sa, sb`` with the offsets' bound ``ob`` (:meth:`_arc_plane_body`), or declines."""
+    def _arc_words(self, others: list[str], plane: int) -> tuple[list[str], list[str]]:
+        """The code that sets an arc's words in mm (``p``, ``q``; an R arc: ``rel``, the bound of its radius's
+        error, :func:`~.double_arcs.r_arc`; an I/J arc: ``oi``, ``ru``, the offsets' bound and rule it is checked
+        with) and ``kd``, its kind (``double_arcs.refined``'s flags, G20's among them): on the common way (G21)
+        and on the slow one (after the G91 chains have grown ``ob``, :meth:`_arc_plane_body`), where G20 scales
+        them (a text that may write it)."""
         def val(x: str) -> str:
             return f"v[{others.index(x)}]" if x in others else "0.0"
 
         a, b, (wa, wb) = _ARC_PLANES[plane]
+        turn = a not in others and b not in others  # the end is the start: a whole turn
+        flag = R_SCREEN if "R" in others else IJ_SCREEN | (TURN if turn else 0)
+        kind = f"kd = {float(flag | CW)} if mode == 2 else {float(flag)}"
+        if "R" in others:  # R in G20: scaled, with double_arcs.R_INCH_REL for its error
+            common = [f"p = {val('R')}; rel = {2.0**-51!r}; {kind}"]
+            inch = [f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; kd = kd + {float(INCH_ARC)}"]
+        else:  # I/J in G20: scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
+            common = [f"p = {val(wa)}; q = {val(wb)}; oi = ob; ru = {self.rule!r}; {kind}"]
+            inch = [f"    p = p * {INCH!r}; q = q * {INCH!r}; oi = IOFFB(ob, p, q); ru = {inch_rule(self.rule)!r}; "
+                    f"kd = kd + {float(INCH_ARC)}"]
+        return common, [*common, "if st.inch:", *inch] if self.g20_text else common
+
+    def _arc_body(self, others: list[str], plane: int, ends: tuple[str, str, str, str]) -> list[str]:
+        """The code that adds the box of the arc just moved in ``plane`` (:mod:`.double_arcs`, on the plane's
+        first and second axes as the full path's ``Interpreter.arc``: G18's are Z and X, with K and I) from
+        ``sa, sb`` to ``ends[2:]`` with the offsets' bound ``ob`` and the words of :meth:`_arc_words`
+        (:meth:`_arc_plane_body`), or declines.  An R arc's quick box is :func:`~.double_arcs.r_screen`'s, run
+        inline (:func:`~.double_arcs.r_screen_code`); an I/J arc's ``ij_check``'s.  The arc's record (its row,
+        box, words and plane slot, :meth:`add_arc`) is one ``extend`` of :attr:`new_arcs`."""
+        a, b, _words = _ARC_PLANES[plane]
         ia, ib = self.index[a], self.index[b]
         turn = a not in others and b not in others  # the end is the start: a whole turn
-        ends = f"sa, sb, pos[{ia}], pos[{ib}]"
-        words: list[str] = []
+
+        def record(xlo: str, xhi: str, ylo: str, yhi: str) -> list[str]:
+            q = "0.0" if "R" in others else "q"
+            return [f"AX((n, {xlo}, {xhi}, {ylo}, {yhi}, kd, p, {q}, ob))"]  # (n: _ARC_ITEMS)
+
         if "R" in others:
-            # R in mm: in G20 scaled, with double_arcs.R_INCH_REL for its error
-            words = [f"p = {val('R')}; rel = {2.0**-51!r}; fl = 0.0"]
-            if self.g20_text:
-                words += ["if st.inch:", f"    p = p * {INCH!r}; rel = {R_INCH_REL!r}; fl = {float(INCH_ARC)}"]
-            call = f"R_ARC({ends}, p, ob, rel)"
-            kind = f"AW((({float(R_SCREEN | CW)} if mode == 2 else {float(R_SCREEN)}) + fl, p, 0.0, ob))"
+            box = r_screen_code(ends, "p", "ob", "rel", record)
         else:
-            # the words in mm: in G20 scaled, with the offsets' bound and rule of double_arcs.inch_offb, inch_rule
-            words = [f"p = {val(wa)}; q = {val(wb)}; oi = ob; ru = {self.rule!r}; fl = 0.0"]
-            if self.g20_text:
-                words += ["if st.inch:", f"    p = p * {INCH!r}; q = q * {INCH!r}; oi = IOFFB(ob, p, q); "
-                          f"ru = {inch_rule(self.rule)!r}; fl = {float(INCH_ARC)}"]
-            call = f"IJ_ARC({ends}, p, q, mode == 2, oi, ru, {turn}, True)"  # (ij_check: ij_screen's box)
-            flag = IJ_SCREEN | (TURN if turn else 0)
-            kind = f"AW((({float(flag | CW)} if mode == 2 else {float(flag)}) + fl, p, q, ob))"
-        return [*words, f"if st.arc_plane != {plane}: st.arc_in({plane})",
-                # (first a test tiny() implies, on each of the plane's axes: the motion's end sa (row -2) and start
-                # differ by LIM (plus twice a G91 chain's error, XERR) or more, and |sa| < 1e10, leave tiny()'s
-                # bound there below DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|, and likewise sb: most arcs follow a
-                # motion that is not short on one of them, an arc in another plane too)
-                f"if st.blend and n > 2 and (-(li := LIM + 2.0 * XERR[{ia}]) < sa - C{ia}[-3] < li "
-                "or not -1e10 < sa < 1e10) "
-                f"and (-(li := LIM + 2.0 * XERR[{ib}]) < sb - C{ib}[-3] < li or not -1e10 < sb < 1e10) "
+            box = [f"box = IJ_ARC({', '.join(ends)}, p, q, mode == 2, oi, ru, {turn}, True)",  # (ij_screen's box)
+                   "if box.__class__ is str: raise D(box)", *record("box[0]", "box[1]", "box[2]", "box[3]")]
+        return [f"if st.arc_plane != {plane}: st.arc_in({plane})",
+                # (first a test tiny() implies, on each of the plane's axes: _short)
+                f"if st.blend and n > 2 and ({self._short(ia, 'sa')}) and ({self._short(ib, 'sb')}) "
                 "and st.tiny(n - 2) and not st.lone(n - 2) and not st.dwell_at(n - 2): "
                 "raise D('an arc after a motion LinuxCNC may drop in a blended corner')",
-                f"box = {call}", "if box.__class__ is str: raise D(box)",
-                "AR(st.row0 + n - 1); AB(box); AS(st.arc_slot)", kind,
-                f"if len(NA_ROWS) >= {_ARC_BUFFER}: st.arc_flush()"]
+                *box, f"if len(NEW) >= {_ARC_BUFFER * _ARC_ITEMS}: st.arc_flush()"]
+
+    def _short(self, i: int, s: str) -> str:
+        """The test, on axis ``i`` whose start is ``s``, that the blended-corner test of an arc makes before
+        ``tiny()``, which it implies: ``tiny()`` holds only if the motion before the arc, from row -3 to ``s`` (row
+        -2), is short on every axis.  When it differs by ``LIM`` plus twice a G91 chain's error (``XERR``) or more
+        and ``|s| < 1e10``, ``tiny()``'s bound there is below ``DR + PAD + 8e-5 + 4e-15 |t| + 2 XERR < |t|``: most
+        arcs follow a motion that is not short on one of the plane's axes (an arc in another plane too).  The
+        limit is ``LIM`` (a literal) first: with no chain's error ``LIM + 2 XERR`` is ``LIM``, and with one it is
+        larger, so ``|t| < LIM`` implies ``|t| < LIM + 2 XERR`` (arc43: no sum an arc)."""
+        lim = 2 * (_DROPPED + self.tiny_pad) + 1e-4
+        return (f"-{lim!r} < (bt := {s} - C{i}[-3]) < {lim!r} or XERR[{i}] and -(li := {lim!r} + 2.0 * XERR[{i}]) "
+                f"< bt < li or not -1e10 < {s} < 1e10")
 
     def _arc_plane_body(self, others: list[str], axes: list[tuple[int, int]], plane: int) -> list[str]:
         """The code of an arc in ``plane`` after its checks: its rows and its box, or a decline (the machine
         lacks a plane axis, the block has the centre word of the plane's normal: the full path's GC308,
         GC204).
 
-        The ends are a straight move's (:meth:`_straight_ends`: G90, G91 and G20, the G91 chains' bounds); the
-        arc is computed with the offsets' bound grown by the chains' errors of its plane axes at its start and
-        at its end (:func:`~.double_arcs.chain_offb`, which says why that holds the arc; ``ERR`` is None off a chain): a G91
-        arc's centre ``S' + (I, J)`` carries its start's error, its end ``S' + W`` its chain's."""
+        The ends are a straight move's (:meth:`_ends`: G90, G91 and G20, the G91 chains' bounds); the arc is
+        computed with the offsets' bound grown by the chains' errors of its plane axes at its start and at its
+        end (:func:`~.double_arcs.chain_offb`, which says why that holds the arc; ``ERR`` is None off a chain): a
+        G91 arc's centre ``S' + (I, J)`` carries its start's error, its end ``S' + W`` its chain's.  The common
+        way (G90 G21, no chain open: ``st.slow`` false, so no axis has a chain's error) reads none of them
+        (arc43: a dozen tests less an arc)."""
         a, b, words = _ARC_PLANES[plane]
         if a not in self.index or b not in self.index:
             return [f"raise D('an arc in G{plane} on a machine without {a} and {b}')"]
@@ -1686,23 +1723,40 @@ class _Pass:
             return [f"raise D('an arc in G{plane} with a centre word other than {words[0]} and {words[1]}')"]
         ia, ib = self.index[a], self.index[b]
         moved = tuple(sorted({i for _k, i in axes} | {ia, ib}))
-        # the chains' errors at the start (before the ends: a G90 end ends its chain; None: no chain) and at the end
-        start, chained = [], []
-        if self.g91_text:
-            start = [f"ea = ERR[{ia}]; eb = ERR[{ib}]"]
-            # chain_offb inline (a call less an arc; at ein 0 an ulp above offb, a larger bound), its ein the
-            # largest of the four errors (None: 0) by comparisons, not a call of max (plane42: 4k instructions less
-            # a G91 arc)
-            chained = ["if ea is not None or eb is not None or st.chained:",
-                       f"    ga = ERR[{ia}] or 0.0; gb = ERR[{ib}] or 0.0",
-                       "    if gb > ga: ga = gb",
-                       "    if ea is not None and ea > ga: ga = ea",
-                       "    if eb is not None and eb > ga: ga = eb",
-                       f"    ob = NA(ob + ga * {2.0**50!r}, INF)"]
+        g90, slow = self._ends(axes)
+        common, slow_words = self._arc_words(others, plane)
+        ends = [*g90, *common]
+        if slow is not None:
+            slow = [*self._chain_start(ia, ib), *slow, *self._chained(ia, ib), *slow_words]
+            ends = ["if st.slow:", *(f"    {b}" for b in slow), "else:", *(f"    {b}" for b in ends)]
+        named = {i for _k, i in axes}
+        # the ends' sources: the end rows' doubles (x<i> for an axis the block names, else pos[i] read once)
+        last = [f"x{i}" if i in named else f"t{i}" for i in (ia, ib)]
+        reads = [f"t{i} = pos[{i}]" for i in dict.fromkeys((ia, ib)) if i not in named]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
                 f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *start, *self._straight_ends(axes), *self._levels(others, axes), *chained, *self._kept_words(axes),
-                *self._appends(axes), "n = len(C0)", *self._arc_body(others, plane)]
+                *ends, *self._levels(others, axes), *self._kept_words(axes),
+                *self._appends(axes), "n = len(C0)", *reads,
+                *self._arc_body(others, plane, ("sa", "sb", last[0], last[1]))]
+
+    def _chain_start(self, ia: int, ib: int) -> list[str]:
+        """The code that reads the G91 chains' errors of the plane's axes at an arc's start (before its ends: a
+        G90 end ends its chain; None: no chain), in a text that may write G91."""
+        return [f"ea = ERR[{ia}]; eb = ERR[{ib}]"] if self.g91_text else []
+
+    def _chained(self, ia: int, ib: int) -> list[str]:
+        """The code that grows ``ob`` by the chains' errors at the arc's start and end, in a text that may write
+        G91: :func:`~.double_arcs.chain_offb` inline (a call less an arc; at ``ein`` 0 an ulp above ``offb``, a
+        larger bound), its ``ein`` the largest of the four errors (None: 0) by comparisons, not a call of max
+        (plane42: 4k instructions less a G91 arc)."""
+        if not self.g91_text:
+            return []
+        return ["if ea is not None or eb is not None or st.chained:",
+                f"    ga = ERR[{ia}] or 0.0; gb = ERR[{ib}] or 0.0",
+                "    if gb > ga: ga = gb",
+                "    if ea is not None and ea > ga: ga = ea",
+                "    if eb is not None and eb > ga: ga = eb",
+                f"    ob = NA(ob + ga * {2.0**50!r}, INF)"]
 
     def _appends(self, axes: list[tuple[int, int]]) -> list[str]:
         """The code that appends a motion's end (``x<i>`` for the axes set, else ``pos``) to the columns."""
