@@ -58,8 +58,10 @@ BOX_RUNS = True
 
 _UNIT = 10**SCALE
 _ZERO_DIGITS = str.maketrans("123456789", "000000000")
-#: a line that starts with an N word (the layouts take N first only), and its number
-_NUMBERED = re.compile(r"^[ \t]*N", re.M)
+#: a line after the first that starts with an N word (the layouts take N first only; ``"\n"`` first, not
+#: ``^`` under ``re.M``: the search then looks for the newline, not a match at every offset), and its number
+_NUMBERED = re.compile(r"\n[ \t]*N")
+_FIRST_N = re.compile(r"[ \t]*N")
 _N_WORD = re.compile(r"[ \t]*N[ \t]*(\d+)")
 _WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
 #: integer digits of a length at most (coordinates stay far below the lanes' ``2**57`` at the scale)
@@ -376,7 +378,8 @@ class _Lines:
         self.keys = text.translate(_ZERO_DIGITS).split("\n")
         self.dotless = text.replace(".", "").split("\n")
         self.pos = self.at = 0
-        self.numbered = _NUMBERED.search(text) is not None  # a line may start with an N word
+        # a line may start with an N word (the first line, or another)
+        self.numbered = "N" in text and (_FIRST_N.match(text) is not None or _NUMBERED.search(text) is not None)
 
     def last_number(self, first: int, end: int) -> Fraction | None:
         """The N of the last line of index ``first`` .. ``end - 1`` that has one (the layout's N word comes
