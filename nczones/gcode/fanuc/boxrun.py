@@ -418,29 +418,27 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
     line number and index; the state, box and counts in ``st``.
 
     The loop counts lines by their index only (the offsets and line numbers are summed once after it,
-    :func:`_ended`).  An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read
+    :func:`_ended`).  It is a ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards
+    CPython 3.11's warm-up of the code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the
+    loop is specialized after 8 lines, not after 8 calls (a 10,000-line run is 10 calls).  An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read
     here, not by :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36), its
     inside test tighter for a minor arc (``R > 0``) than :func:`_arc`'s diameter test, which a major arc keeps.
     A minor arc lies within half its chord ``h`` of the chord's midpoint ``M``: for a point ``P`` of the circle
     (centre at distance ``d`` from ``M``, angle ``t`` between ``CP`` and ``CM``), ``|PM|**2 = r**2 + d**2 - 2 r d
     cos t``, and the minor arc has ``cos t >= d / r`` (its ends have equality), so ``|PM|**2 <= r**2 - d**2 =
     h**2``; with ``h <= (|dx| + |dy|) / 2`` its ``a`` lies in ``[min a - |dy| / 2, max a + |dy| / 2]``, and
-    ``r_arc_box``'s bounds (outward by at most a unit) within :data:`_SLACK` of that: fewer arcs need their box."""
+    ``r_arc_box``'s bounds (outward by at most a unit) within :data:`_SLACK` of that: fewer arcs need their box.
+    An offset 0 is not added to an end (a sum of large integers is a new object)."""
     p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
     motion, feed, kinds, straight_ok, arc_ok = st.motion, st.feed, st.kinds, st.straight_ok, st.arc_ok
     ia, ib = st.plane[0], st.plane[1]
     oa, ob = off[ia], off[ib]
-    first = i
-    g_seen = blanks = 0
+    first, g_seen, blanks = i, 0, 0
     if feed < 0:
         return pos, lineno, i  # (the lanes' decline of a negative feed; an F word read here is never negative)
-    # the index past the lines (the text's end: a last line that is empty starts at len(text)), and past the room
-    lim = len(keys) - (not keys[-1])
-    stop = min(i + st.room, lim)
-    # ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards CPython 3.11's warm-up of the
-    # code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the loop is specialized after 8
-    # lines, not after 8 calls (a 10,000-line run is 10 calls)
-    while True:
+    lim = len(keys) - (not keys[-1])  # past the lines (an empty last line starts at the text's end: none)
+    stop = min(i + st.room, lim)  # and past the room
+    while True:  # (not ``while cond:``, docstring)
         if i >= stop:
             break
         key = keys[i]
@@ -469,10 +467,9 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
             _straight(line, words, p, lo, hi, off)
         elif r_arc is not None and fv and arc_ok:  # _arc's steps for an R arc in the plane, written out
             r, rm, wa, am, wb, bm = r_arc
-            sa = p[ia]
-            sb = p[ib]
-            ea = int(line[wa]) * am + oa
-            eb = int(line[wb]) * bm + ob
+            sa, sb = p[ia], p[ib]
+            ea = int(line[wa]) * am + oa if oa else int(line[wa]) * am
+            eb = int(line[wb]) * bm + ob if ob else int(line[wb]) * bm
             rv = int(line[r]) * rm
             if ea >= sa:  # the ends' least and greatest (statements: no tuple is made)
                 a0, a1 = sa, ea
@@ -482,8 +479,7 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
                 b0, b1 = sb, eb
             else:
                 b0, b1 = eb, sb
-            adx = a1 - a0
-            ady = b1 - b0
+            adx, ady = a1 - a0, b1 - b0
             if rv > 0:  # a minor arc lies within half its chord of the chord's midpoint: |dy| / 2 of the ends in a
                 ar = rv
                 w = (ady >> 1) + _SLACK
@@ -500,8 +496,7 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
                     (adx <= ar and ady <= ar and (adx or ady)) or 0 < adx * adx + ady * ady <= 3 * ar * ar)) \
                     and not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
                 break
-            p[ia] = ea
-            p[ib] = eb
+            p[ia], p[ib] = ea, eb
         elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
             break
         kinds[mo // 10] += 1
