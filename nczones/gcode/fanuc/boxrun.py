@@ -420,9 +420,11 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
     The loop counts lines by their index only (the offsets and line numbers are summed once after it,
     :func:`_ended`).  It is a ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards
     CPython 3.11's warm-up of the code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the
-    loop is specialized after 8 lines, not after 8 calls (a 10,000-line run is 10 calls).  An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read
-    here, not by :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36), its
-    inside test tighter for a minor arc (``R > 0``) than :func:`_arc`'s diameter test, which a major arc keeps.
+    loop is specialized after 8 lines, not after 8 calls (a 10,000-line run is 10 calls).
+
+    An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read here, not by
+    :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36), its inside test
+    tighter for a minor arc (``R > 0``) than :func:`_arc`'s diameter test, which a major arc keeps.
     A minor arc lies within half its chord ``h`` of the chord's midpoint ``M``: for a point ``P`` of the circle
     (centre at distance ``d`` from ``M``, angle ``t`` between ``CP`` and ``CM``), ``|PM|**2 = r**2 + d**2 - 2 r d
     cos t``, and the minor arc has ``cos t >= d / r`` (its ends have equality), so ``|PM|**2 <= r**2 - d**2 =

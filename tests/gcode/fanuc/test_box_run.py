@@ -398,8 +398,8 @@ def _r_arcs(draw) -> str:
     """A run's box (program X, Y up to 11: straight moves to its corners), then R arcs in G17 from a point in it to
     ends drawn near it (in thousandths): minor and major ones (R < 0), radii from just over half the chord to 20
     times it, exact half circles (the interpreter's: the reader hands them back) and ones just past half (within
-    the tolerance or not), arcs along a face of the box (X or Y 11) a little inside it (bulging past it or not), modal G2/G3,
-    blank lines between, LF or CR LF ends.
+    the tolerance or not), arcs along a face of the box (X or Y 11) a little inside it (bulging past it or not),
+    modal G2/G3, blank lines between, LF or CR LF ends.
     Their bulges cross the box's faces and stay inside it: the reader's inside tests (a minor arc within half its
     chord of the chord's midpoint, any arc within 2|R| of its ends) on both sides of the faces."""
     lines = ["O1000", "G90 G17 G21 G54 G00 X0. Y0. Z0.", "G01 F500.", "G1 X-1. Y-1.", "X11. Y11.", "X-1. Y11.",
