@@ -58,8 +58,10 @@ BOX_RUNS = True
 
 _UNIT = 10**SCALE
 _ZERO_DIGITS = str.maketrans("123456789", "000000000")
-#: a line that starts with an N word (the layouts take N first only), and its number
-_NUMBERED = re.compile(r"^[ \t]*N", re.M)
+#: a line after the first that starts with an N word (the layouts take N first only; ``"\n"`` first, not
+#: ``^`` under ``re.M``: the search then looks for the newline, not a match at every offset), and its number
+_NUMBERED = re.compile(r"\n[ \t]*N")
+_FIRST_N = re.compile(r"[ \t]*N")
 _N_WORD = re.compile(r"[ \t]*N[ \t]*(\d+)")
 _WORD = re.compile(r"([A-Z])[ \t]*(-?0*)(\.?)(0*)[ \t]*")
 #: integer digits of a length at most (coordinates stay far below the lanes' ``2**57`` at the scale)
@@ -270,7 +272,7 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
             return None  # the first line is out of the subset: the text is not cut (a program it declines)
         lines = runner.box_keys = _Lines(text)
     first = lines.index(pos)
-    pos, lineno, index = _lines(st, lines.keys, lines.dotless, text, pos, lineno, first)
+    pos, lineno, index = _lines(st, lines.keys, lines.dotless, pos, lineno, first)
     lines.pos, lines.at = pos, index
     if not st.taken:
         return None
@@ -376,7 +378,8 @@ class _Lines:
         self.keys = text.translate(_ZERO_DIGITS).split("\n")
         self.dotless = text.replace(".", "").split("\n")
         self.pos = self.at = 0
-        self.numbered = _NUMBERED.search(text) is not None  # a line may start with an N word
+        # a line may start with an N word (the first line, or another)
+        self.numbered = "N" in text and (_FIRST_N.match(text) is not None or _NUMBERED.search(text) is not None)
 
     def last_number(self, first: int, end: int) -> Fraction | None:
         """The N of the last line of index ``first`` .. ``end - 1`` that has one (the layout's N word comes
@@ -409,35 +412,45 @@ def _miss(st: _Run, key: str) -> tuple:
     return got
 
 
-def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, lineno: int,
-           i: int) -> tuple[int, int, int]:
+def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int, i: int) -> tuple[int, int, int]:
     """Read lines from ``pos`` (the line of index ``i`` in ``keys``, the lines' layouts, and ``dotless``, the
     lines without their points: :class:`_Lines`) while they are in the subset (module docstring): the next offset,
     line number and index; the state, box and counts in ``st``.
 
+    The loop counts lines by their index only (the offsets and line numbers are summed once after it,
+    :func:`_ended`).  It is a ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards
+    CPython 3.11's warm-up of the code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the
+    loop is specialized after 8 lines, not after 8 calls (a 10,000-line run is 10 calls).
+
     An R arc with both words of the plane and no other axis (its layout's ``r_arc``) is read here, not by
-    :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36)."""
+    :func:`_arc`: the same steps written out (the per-line cost of the R-arc programs, issue 36), its inside test
+    tighter for a minor arc (``R > 0``) than :func:`_arc`'s diameter test, which a major arc keeps.
+    A minor arc lies within half its chord ``h`` of the chord's midpoint ``M``: for a point ``P`` of the circle
+    (centre at distance ``d`` from ``M``, angle ``t`` between ``CP`` and ``CM``), ``|PM|**2 = r**2 + d**2 - 2 r d
+    cos t``, and the minor arc has ``cos t >= d / r`` (its ends have equality), so ``|PM|**2 <= r**2 - d**2 =
+    h**2``; with ``h <= (|dx| + |dy|) / 2`` its ``a`` lies in ``[min a - |dy| / 2, max a + |dy| / 2]``, and
+    ``r_arc_box``'s bounds (outward by at most a unit) within :data:`_SLACK` of that: fewer arcs need their box.
+    An offset 0 is not added to an end (a sum of large integers is a new object)."""
     p, lo, hi, off, layouts, gvalues = st.p, st.lo, st.hi, st.off, st.layouts, _G
-    motion, feed, room, kinds, straight_ok, arc_ok = st.motion, st.feed, st.room, st.kinds, st.straight_ok, st.arc_ok
+    motion, feed, kinds, straight_ok, arc_ok = st.motion, st.feed, st.kinds, st.straight_ok, st.arc_ok
     ia, ib = st.plane[0], st.plane[1]
     oa, ob = off[ia], off[ib]
-    taken = g_seen = last_pos = last_no = 0
+    first, g_seen, blanks = i, 0, 0
     if feed < 0:
         return pos, lineno, i  # (the lanes' decline of a negative feed; an F word read here is never negative)
-    n = len(text)
-    # ``while True``: the loop's back edge is a JUMP_BACKWARD, which counts towards CPython 3.11's warm-up of the
-    # code (``while cond:`` ends in POP_JUMP_BACKWARD_IF_TRUE, which does not): the loop is specialized after 8
-    # lines, not after 8 calls (a 10,000-line run is 10 calls)
-    while True:
-        if taken >= room or pos >= n:
+    lim = len(keys) - (not keys[-1])  # past the lines (an empty last line starts at the text's end: none)
+    stop = min(i + st.room, lim)  # and past the room
+    while True:  # (not ``while cond:``, docstring)
+        if i >= stop:
             break
         key = keys[i]
-        end = pos + len(key)
         got = layouts.get(key) or _miss(st, key)
         if not got:  # out of the subset
             if key.strip(" \t\r"):
                 break
-            pos, lineno, i = end + 1, lineno + 1, i + 1  # a blank line: no block (plain_first)
+            i += 1  # a blank line: no block (plain_first), no room taken
+            blanks += 1
+            stop = min(stop + 1, lim)
             continue
         g, f, words, arc, r_arc = got
         line = dotless[i]
@@ -456,44 +469,62 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], text: str, pos: int, l
             _straight(line, words, p, lo, hi, off)
         elif r_arc is not None and fv and arc_ok:  # _arc's steps for an R arc in the plane, written out
             r, rm, wa, am, wb, bm = r_arc
-            sa = p[ia]
-            sb = p[ib]
-            ea = int(line[wa]) * am + oa
-            eb = int(line[wb]) * bm + ob
+            sa, sb = p[ia], p[ib]
+            ea = int(line[wa]) * am + oa if oa else int(line[wa]) * am
+            eb = int(line[wb]) * bm + ob if ob else int(line[wb]) * bm
             rv = int(line[r]) * rm
-            dx = ea - sa
-            dy = eb - sb
-            if dx >= 0:  # the ends' least and greatest, |dx| (statements: no tuple is made)
-                a0, a1, adx = sa, ea, dx
+            if ea >= sa:  # the ends' least and greatest (statements: no tuple is made)
+                a0, a1 = sa, ea
             else:
-                a0, a1, adx = ea, sa, -dx
-            if dy >= 0:
-                b0, b1, ady = sb, eb, dy
+                a0, a1 = ea, sa
+            if eb >= sb:
+                b0, b1 = sb, eb
             else:
-                b0, b1, ady = eb, sb, -dy
-            ar = rv if rv > 0 else -rv
-            w = 2 * ar + _SLACK
-            # a chord of at most sqrt(3)|R| (_arc's test; |dx|, |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2)
-            if ((adx <= ar and ady <= ar and (adx or ady)) or 0 < dx * dx + dy * dy <= 3 * ar * ar) \
-                    and a1 - w >= lo[ia] and a0 + w <= hi[ia] and b1 - w >= lo[ib] and b0 + w <= hi[ib]:
-                pass  # inside the run's box (_arc): the box stays as it is
-            elif not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
+                b0, b1 = eb, sb
+            adx, ady = a1 - a0, b1 - b0
+            if rv > 0:  # a minor arc lies within half its chord of the chord's midpoint: |dy| / 2 of the ends in a
+                ar = rv
+                w = (ady >> 1) + _SLACK
+                la, ua = a0 - w, a1 + w
+                w = (adx >> 1) + _SLACK
+                lb, ub = b0 - w, b1 + w
+            else:  # any arc lies within 2|R| (a diameter) of both its ends
+                ar = -rv
+                w = 2 * ar + _SLACK
+                la, ua, lb, ub = a1 - w, a0 + w, b1 - w, b0 + w
+            # inside the run's box, for an arc r_arc_box takes (a chord of at most sqrt(3)|R|, _arc's test; |dx|,
+            # |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2): the box stays as it is (module docstring)
+            if not (la >= lo[ia] and ua <= hi[ia] and lb >= lo[ib] and ub <= hi[ib] and (
+                    (adx <= ar and ady <= ar and (adx or ady)) or 0 < adx * adx + ady * ady <= 3 * ar * ar)) \
+                    and not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
                 break
-            p[ia] = ea
-            p[ib] = eb
+            p[ia], p[ib] = ea, eb
         elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
             break
         kinds[mo // 10] += 1
         motion, feed = mo, fv
         if g is not None:
             g_seen += 1
-        last_pos, last_no = pos, lineno
-        taken += 1
-        pos, lineno, i = end + 1, lineno + 1, i + 1
-    st.motion, st.feed, st.taken, st.g_seen = motion, feed, taken, g_seen
+        i += 1
+    st.motion, st.feed, st.g_seen = motion, feed, g_seen
+    return _ended(st, keys, first, i, blanks, pos, lineno)
+
+
+def _ended(st: _Run, keys: list[str], first: int, i: int, blanks: int, pos: int,
+           lineno: int) -> tuple[int, int, int]:
+    """After :func:`_lines` read from the line of index ``first`` (offset ``pos``, number ``lineno``) to index
+    ``i``, ``blanks`` of them blank: the lines taken and the last one's offset and number into ``st``; the next
+    offset, number and index.  A line after the last taken is blank (a taken line has an axis word)."""
+    nxt = pos + len("\n".join(keys[first:i])) + 1 if i > first else pos  # (C loops, not one a line)
+    st.taken = taken = i - first - blanks
     if taken:
-        st.last = (last_pos, last_no)  # the last line taken, its number
-    return pos, lineno, i
+        j = i - 1
+        at = nxt - len(keys[j]) - 1
+        while not keys[j].strip(" \t\r"):
+            j -= 1
+            at -= len(keys[j]) + 1
+        st.last = (at, lineno + j - first)
+    return nxt, lineno + i - first, i
 
 
 def _widen(lo: list[int], hi: list[int], ia: int, ib: int, box: tuple[int, int, int, int] | None) -> bool:

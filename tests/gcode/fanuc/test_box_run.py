@@ -28,6 +28,7 @@ anew); the hunts under ``-m long`` draw new ones each run (``NCZONES_BOX_RUN_HUN
 
 from __future__ import annotations
 
+import math
 import os
 from fractions import Fraction
 
@@ -255,6 +256,29 @@ def test_an_arc_inside_the_run_s_box(arc, past):
     assert (hi_y > 11) == (past and "X6.6" not in arc)
 
 
+@pytest.mark.parametrize("start, arc, axis, past", [
+    ("X10.5 Y3.", "G3 X10.5 Y6. R1.74", "X", True),  # the minor arc of chord 3 bulges 0.858 to X 11.358
+    ("X10.2 Y3.", "G3 X10.2 Y6. R1.74", "X", True),  # to X 11.058: past the face by less than a quarter chord
+    ("X3. Y10.2", "G2 X6. Y10.2 R1.74", "Y", True),  # the same along the Y face (G2 going +X bulges +Y)
+    ("X10.5 Y3.", "G3 X10.5 Y6. R3.", "X", False),  # bulges 0.402: X 10.902, inside
+    ("X10.5 Y3.", "G2 X10.5 Y6. R1.74", "X", False),  # bulges away from the face
+    ("X10.5 Y3.", "G3 X10.5 Y6. R-1.74", "X", True),  # the major arc round its centre (11.382, 4.5): X 13.12
+])
+def test_a_minor_arc_along_the_run_s_box(start, arc, axis, past):
+    """The reader's inside test for a minor arc (within half its chord of the chord's midpoint: ``_lines``) next
+    to a face of the run's box (program X, Y up to 11): an arc whose bulge passes the face by less than a quarter
+    of its chord widens the box as the lanes do (a test tighter than half the chord would leave it), one that
+    stays inside leaves it; the boxes tested are the lanes' in every case."""
+    text = ("O1\nG90 G17 G21 G54 G00 X0. Y0. Z0.\nG01 F500.\nG1 X-1. Y-1.\nX11. Y11.\nX-1. Y11.\nX11. Y-1.\n"
+            f"{start}\n{arc}\nM30\n")
+    read, boxes, taken = _run(text, True, machine=_WIDE)
+    lanes, lane_boxes, _ = _run(text, False, machine=_WIDE)
+    assert (read, boxes) == (lanes, lane_boxes)
+    assert taken == 5
+    hi = dict(boxes[-1][1])[axis] - (100 if axis == "X" else 50)  # program X, Y (G54 = (100, 50))
+    assert (hi > 11) == past
+
+
 @settings(max_examples=60, deadline=None, database=None, derandomize=True)
 @given(st.lists(st.sampled_from(["G1 X1.", "", "G2 X3. Y1. R2.5", "(C)", "\r"]), min_size=1, max_size=30),
        st.lists(st.integers(0, 10**6), min_size=1, max_size=12))
@@ -367,3 +391,66 @@ def test_the_reader_reads_the_fanuc_corpus_as_the_lanes():
             assert (read, boxes) == _run(text, False, machine=machine)[:2], path
             taken += got
     assert taken > 0
+
+
+@st.composite
+def _r_arcs(draw) -> str:
+    """A run's box (program X, Y up to 11: straight moves to its corners), then R arcs in G17 from a point in it to
+    ends drawn near it (in thousandths): minor and major ones (R < 0), radii from just over half the chord to 20
+    times it, exact half circles (the interpreter's: the reader hands them back) and ones just past half (within
+    the tolerance or not), arcs along a face of the box (X or Y 11) a little inside it (bulging past it or not),
+    modal G2/G3, blank lines between, LF or CR LF ends.
+    Their bulges cross the box's faces and stay inside it: the reader's inside tests (a minor arc within half its
+    chord of the chord's midpoint, any arc within 2|R| of its ends) on both sides of the faces."""
+    lines = ["O1000", "G90 G17 G21 G54 G00 X0. Y0. Z0.", "G01 F500.", "G1 X-1. Y-1.", "X11. Y11.", "X-1. Y11.",
+             "X11. Y-1.", "X5. Y5."]
+    x = y = 5000
+    modal = False
+    for _ in range(draw(st.integers(1, 25))):
+        kind = draw(st.sampled_from(["arc", "arc", "arc", "half", "near", "face", "face", "blank"]))
+        if kind == "blank":
+            lines.append(draw(st.sampled_from(["", " ", "\r"])))
+            continue
+        if kind == "face":  # a straight move to within 1.5 of a face, then an arc along it, bulging to it or away
+            a, f = draw(st.sampled_from([(0, 11000), (1, 11000)]))  # (the box holds the machine's zero too)
+            d = -draw(st.integers(0, 1500))
+            x, y = (f + d, draw(st.integers(0, 10000))) if a == 0 else (draw(st.integers(0, 10000)), f + d)
+            lines.append(f"G1 X{_num(Fraction(x, 1000))} Y{_num(Fraction(y, 1000))}")
+            along = draw(st.integers(500, 4000)) * draw(st.sampled_from([1, -1]))
+            ex, ey = (x, y + along) if a == 0 else (x + along, y)
+        else:
+            ex = min(max(x + draw(st.integers(-3000, 3000)), -1500), 11500)
+            ey = y if kind == "half" else min(max(y + draw(st.integers(-3000, 3000)), -1500), 11500)
+        if kind == "half" and (ex - x) % 2:
+            ex += 1
+        if (ex, ey) == (x, y):
+            ex += 1000
+        half = Fraction(math.isqrt(4 * ((ex - x) ** 2 + (ey - y) ** 2)) + 1, 4)  # just over half the chord
+        if kind == "face":  # a chord of at most sqrt(3) R (the reader's inside test) from 2 / sqrt(3) h on
+            r = math.ceil(half * draw(st.sampled_from([Fraction(1155, 1000), Fraction(116, 100), Fraction(6, 5), 2])))
+        elif kind == "half":
+            r = abs(ex - x) // 2  # a diameter
+        elif kind == "near":
+            r = math.ceil(half) + draw(st.sampled_from([0, 1, 2, 50, 300]))
+        else:
+            r = math.ceil(half * draw(st.sampled_from([Fraction(101, 100), Fraction(6, 5), 2, 5, 20])))
+        r = -r if draw(st.integers(0, 3)) == 0 else r
+        word = draw(st.sampled_from(["G2 ", "G3 ", "G02 ", "", ""] if modal else ["G2 ", "G3 ", "G03 "]))
+        word = word or ("G2 " if lines[-1].startswith("G1") else "")  # (after a straight move: G2 again)
+        lines.append(f"{word}X{_num(Fraction(ex, 1000))} Y{_num(Fraction(ey, 1000))} R{_num(Fraction(r, 1000))}")
+        x, y, modal = ex, ey, True
+    return draw(st.sampled_from(["\n", "\r\n"])).join(lines) + "\n"
+
+
+@settings(max_examples=max(3, EXAMPLES * 5 // 8), deadline=None, database=None, derandomize=_FIXED,
+          suppress_health_check=[HealthCheck.too_slow])
+@given(_r_arcs())
+def test_r_arcs_read_as_the_lanes(text):
+    """R arcs the reader reads itself (``_lines``' written-out R-arc steps, issue 36) and those it hands back: the
+    report and every box tested are the lanes' (which make every arc's box with ``r_arc_box``), and the state
+    after them (position, counts, block index, span) is the lanes' too."""
+    read, boxes, taken = _run(text + "M30\n", True, machine=_WIDE)
+    lanes, lane_boxes, _ = _run(text + "M30\n", False, machine=_WIDE)
+    assert (read, boxes) == (lanes, lane_boxes)
+    assert taken >= 1
+    _state_handed_back(text + "M30")
