@@ -39,7 +39,6 @@ mapped as ``_transform_target`` maps it (``transform_points``), I/J arcs boxed o
 
 from __future__ import annotations
 
-import math
 import re
 from fractions import Fraction
 
@@ -766,44 +765,22 @@ def _rotation_plan(plans: dict, key: str, words: tuple, pm: Any) -> tuple:
 
 def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
     """``move(line, plan)``: a straight move's words (:func:`_rotation_plan`) into the program point, the machine
-    point and the box, False (nothing changed) when the rotated point is uncertain.  ``PointMap.rotated``'s steps
-    written out (the same doubles, the same test: ``test_box_transforms`` holds them to it)."""
-    from .transform_points import FLOAT_EXACT as big
-    from .transform_points import GUARD as guard
-    from .transform_points import QUOTIENT as quot
-
+    point and the box, False (nothing changed) when the rotated point is uncertain (``PointMap.rotated``)."""
     p, lo, hi, off = st.p, st.lo, st.hi, st.off
-    ia, ib, ca, cb, c, s, step, per, exact = pm.ia, pm.ib, pm.ca, pm.cb, pm.c, pm.s, pm.st, pm.per, pm.exact
-    oa, ob, floor = off[ia], off[ib], math.floor
+    ia, ib, rotated = pm.ia, pm.ib, pm.rotated
+    oa, ob = off[ia], off[ib]
 
     def move(line: str, plan: tuple) -> bool:
         wa, ma, wb, mb, others = plan
         if wa is not None or wb is not None:
             a = int(line[wa]) * ma if wa is not None else prog[ia]
             b = int(line[wb]) * mb if wb is not None else prog[ib]
-            x = a - ca
-            y = b - cb
-            if -big < x < big and -big < y < big:
-                xd = float(x)
-                yd = float(y)
-                err = (abs(xd) + abs(yd)) * per
-                u = (xd * c - yd * s) / step
-                v = (xd * s + yd * c) / step
-                mu = floor(u)
-                mv = floor(v)
-                fu = u - mu
-                fv = v - mv
-                ok = abs(fu - 0.5) > err + abs(u) * quot + guard and abs(fv - 0.5) > err + abs(v) * quot + guard
-            else:
-                ok = False
-            if ok:
-                ma = ca + (mu + (fu > 0.5)) * step + oa
-                mb = cb + (mv + (fv > 0.5)) * step + ob
-            else:
-                got = exact(a, b)
-                if got is None:
-                    return False
-                ma, mb = got[0] + oa, got[1] + ob
+            got = rotated(a, b)
+            if got is None:
+                return False
+            ma, mb = got
+            ma += oa
+            mb += ob
             prog[ia] = a
             prog[ib] = b
             p[ia] = ma
@@ -816,10 +793,11 @@ def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
                 lo[ib] = mb
             elif mb > hi[ib]:
                 hi[ib] = mb
-        for sl, m, k in others:
-            w = int(line[sl]) * m
-            prog[k] = w
-            _box_at(p, lo, hi, k, w + off[k])
+        if others:
+            for sl, m, k in others:
+                w = int(line[sl]) * m
+                prog[k] = w
+                _box_at(p, lo, hi, k, w + off[k])
         return True
 
     return move
