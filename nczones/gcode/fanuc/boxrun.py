@@ -270,13 +270,30 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         lines = runner.box_keys = _Lines(text)
     first = lines.index(pos)
     pos, lineno, index = _lines(st, lines.keys, lines.dotless, text, pos, lineno, first)
+    if not _ended(runner, st, lines, first, pos, index):
+        return None
+    return _hand_back(runner, runner.state, st, pos, lineno)
+
+
+def _cut(runner: Any, text: str) -> _Lines:
+    """The runner's :class:`_Lines` of ``text``, cut now when it holds none of that text."""
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        lines = runner.box_keys = _Lines(text)
+    return lines  # type: ignore[no-any-return]
+
+
+def _ended(runner: Any, st: _Run, lines: _Lines, first: int, pos: int, index: int) -> bool:
+    """After a run read lines of index ``first`` .. ``index - 1`` (``pos``: the next line's offset): where the next
+    run starts looking (``_Lines.index``), and the last sequence number a macro reads (#4114), as the general path
+    keeps it; False when the run took no line."""
     lines.pos, lines.at = pos, index
     if not st.taken:
-        return None
+        return False
     number = lines.last_number(first, index)
-    if number is not None:  # the last sequence number a macro reads (#4114), as the general path keeps it
+    if number is not None:
         runner.lane_number(number)
-    return _hand_back(runner, runner.state, st, pos, lineno)
+    return True
 
 
 def _read_holes(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
@@ -305,24 +322,19 @@ def _read_holes(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int
     levels = [z for z in scaled if z is not None and abs(z) < 2**56]
     if len(levels) != len(scaled) or not _state(runner, interp, st):
         return None
-    lines = runner.box_keys
-    if lines is None or lines.text is not text:
-        lines = runner.box_keys = _Lines(text)
+    lines = _cut(runner, text)
     first = lines.index(pos)
     holes, pos, lineno = _holes(st, lines, len(plan[2]), pos, lineno, first)
-    if not holes:
+    st.taken = holes
+    if not _ended(runner, st, lines, first, pos, first + holes):
         return None
     iz = st.index["Z"]
     st.lo[iz] = min(st.lo[iz], *levels)
     st.hi[iz] = max(st.hi[iz], *levels)
-    number = lines.last_number(first, first + holes)
-    if number is not None:
-        runner.lane_number(number)
     interp.note_assumed(plan[5])
     counts = interp.kind_counts
     for kind, *_rest in plan[2]:
         counts[kind] += holes
-    st.taken = holes
     return _hand_back(runner, interp, st, pos, lineno, holes * len(plan[2]))
 
 
@@ -661,22 +673,16 @@ def _read_transformed(runner: Any, text: str, pos: int, lineno: int) -> tuple[in
     pm = PointMap.of(xf, SCALE)
     st = _Run()
     st.straight_ok = st.arc_ok = True
-    if pm is None or not _state(runner, interp, st):
-        return None
+    if pm is None or not _state(runner, interp, st) or st.feed < 0:
+        return None  # (a negative feed: the lanes' decline, as _lines)
     prog: Any = [_scaled(v) for v in interp.prog]
     if None in prog or not _mapped_here(interp, xf):
         return None
-    lines = runner.box_keys
-    if lines is None or lines.text is not text:
-        lines = runner.box_keys = _Lines(text)
+    lines = _cut(runner, text)
     first = lines.index(pos)
     pos, lineno, index = _xlines(st, pm, prog, lines, pos, lineno, first)
-    lines.pos, lines.at = pos, index
-    if not st.taken:
+    if not _ended(runner, st, lines, first, pos, index):
         return None
-    number = lines.last_number(first, index)
-    if number is not None:
-        runner.lane_number(number)
     interp.prog = [Fraction(v, _UNIT) for v in prog]
     return _hand_back(runner, interp, st, pos, lineno)
 
@@ -710,8 +716,6 @@ def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno:
     else:
         move = _scaling_mover(st, pm, prog)
     taken = g_seen = last_pos = last_no = 0
-    if feed < 0:
-        return pos, lineno, i
     while True:
         if taken >= room or pos >= n:
             break
