@@ -1553,16 +1553,17 @@ class FanucInterpreter(Interpreter):
         top = initial if not self.retract_r else r
         top_deps = self.initial_level_deps if not self.retract_r and self.track else None
         transformed = self.prog is not None
-        if transformed:
-            if (self.scaling is not None and self.scaling.factors[iz] != 1) or (
-                    self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
-                    self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib)):
-                self.unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
-                return
-            if self._first_after_transform and not self.absolute:
+        if transformed and ((self.scaling is not None and self.scaling.factors[iz] != 1) or (
+                self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
+                self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib))):
+            self.unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
+            return
+        if self._first_after_transform:  # the hole's positioning is the first move after a transform's block
+            if self.absolute:
+                self._first_after_transform = False
+            elif transformed:
                 self.unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
                 return
-            self._first_after_transform = False
         xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
         for rep in range(reps):
             if rep and self.budget_gone(name, f"{kw.text if kw is not None else ''} had drilled {rep} holes", kw):
