@@ -131,6 +131,18 @@ def test_a_hole_in_g90_is_the_first_move_after_a_cancel(on, off):
         assert {(r.verdict.label, tuple(r.reasons)) for r in got} == {("safe", ())}
 
 
+@pytest.mark.parametrize(("on", "off"), _TRANSFORM_PAIRS)
+def test_an_incremental_hole_right_after_a_cancel_is_unknown(on, off):
+    """A G91 hole as the first move after G69 / G50 is an incremental first move, which the manuals give no
+    meaning (as a G91 G01 there): unknown at that line on the full path and the fast path, not drilled."""
+    text = (f"G17 G40 G80 G21 G90 G54 F300.\nG00 Z20.\n{on}\nG90 G00 X1. Y1. Z10.\n{off}\n"
+            "G91 G81 X5. Y5. Z-5. R-8. F200.\nX1.\nG80\nG90 G00 X0. Y0.\nM30\n")
+    for fast in (False, True):
+        run = interpret_text(text, mill(), fast=fast)
+        list(run.segments())
+        assert run.status == "unknown" and [(u.code, u.span.line) for u in run.unsupported] == [("G81", 6)], fast
+
+
 # ---------------------------------------------------------------- parameter ranges through a transform
 
 FENCE = machine_text("fanuc_rotated_fence")
