@@ -39,7 +39,6 @@ mapped as ``_transform_target`` maps it (``transform_points``), I/J arcs boxed o
 
 from __future__ import annotations
 
-import math
 import re
 from fractions import Fraction
 
@@ -273,13 +272,30 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
         lines = runner.box_keys = _Lines(text)
     first = lines.index(pos)
     pos, lineno, index = _lines(st, lines.keys, lines.dotless, pos, lineno, first)
+    if not _close_run(runner, st, lines, first, pos, index):
+        return None
+    return _hand_back(runner, runner.state, st, pos, lineno)
+
+
+def _cut(runner: Any, text: str) -> _Lines:
+    """The runner's :class:`_Lines` of ``text``, cut now when it holds none of that text."""
+    lines = runner.box_keys
+    if lines is None or lines.text is not text:
+        lines = runner.box_keys = _Lines(text)
+    return lines  # type: ignore[no-any-return]
+
+
+def _close_run(runner: Any, st: _Run, lines: _Lines, first: int, pos: int, index: int) -> bool:
+    """After a run read lines of index ``first`` .. ``index - 1`` (``pos``: the next line's offset): where the next
+    run starts looking (``_Lines.index``), and the last sequence number a macro reads (#4114), as the general path
+    keeps it; False when the run took no line."""
     lines.pos, lines.at = pos, index
     if not st.taken:
-        return None
+        return False
     number = lines.last_number(first, index)
-    if number is not None:  # the last sequence number a macro reads (#4114), as the general path keeps it
+    if number is not None:
         runner.lane_number(number)
-    return _hand_back(runner, runner.state, st, pos, lineno)
+    return True
 
 
 def _read_holes(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int, bool] | None:
@@ -308,24 +324,19 @@ def _read_holes(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, int
     levels = [z for z in scaled if z is not None and abs(z) < 2**56]
     if len(levels) != len(scaled) or not _state(runner, interp, st):
         return None
-    lines = runner.box_keys
-    if lines is None or lines.text is not text:
-        lines = runner.box_keys = _Lines(text)
+    lines = _cut(runner, text)
     first = lines.index(pos)
     holes, pos, lineno = _holes(st, lines, len(plan[2]), pos, lineno, first)
-    if not holes:
+    st.taken = holes
+    if not _close_run(runner, st, lines, first, pos, first + holes):
         return None
     iz = st.index["Z"]
     st.lo[iz] = min(st.lo[iz], *levels)
     st.hi[iz] = max(st.hi[iz], *levels)
-    number = lines.last_number(first, first + holes)
-    if number is not None:
-        runner.lane_number(number)
     interp.note_assumed(plan[5])
     counts = interp.kind_counts
     for kind, *_rest in plan[2]:
         counts[kind] += holes
-    st.taken = holes
     return _hand_back(runner, interp, st, pos, lineno, holes * len(plan[2]))
 
 
@@ -693,22 +704,16 @@ def _read_transformed(runner: Any, text: str, pos: int, lineno: int) -> tuple[in
     pm = PointMap.of(xf, SCALE)
     st = _Run()
     st.straight_ok = st.arc_ok = True
-    if pm is None or not _state(runner, interp, st):
-        return None
+    if pm is None or not _state(runner, interp, st) or st.feed < 0:
+        return None  # (a negative feed: the lanes' decline, as _lines)
     prog: Any = [_scaled(v) for v in interp.prog]
     if None in prog or not _mapped_here(interp, xf):
         return None
-    lines = runner.box_keys
-    if lines is None or lines.text is not text:
-        lines = runner.box_keys = _Lines(text)
+    lines = _cut(runner, text)
     first = lines.index(pos)
     pos, lineno, index = _xlines(st, pm, prog, lines, pos, lineno, first)
-    lines.pos, lines.at = pos, index
-    if not st.taken:
+    if not _close_run(runner, st, lines, first, pos, index):
         return None
-    number = lines.last_number(first, index)
-    if number is not None:
-        runner.lane_number(number)
     interp.prog = [Fraction(v, _UNIT) for v in prog]
     return _hand_back(runner, interp, st, pos, lineno)
 
@@ -742,8 +747,6 @@ def _xlines(st: _Run, pm: Any, prog: list[int], lines: _Lines, pos: int, lineno:
     else:
         move = _scaling_mover(st, pm, prog)
     taken = g_seen = last_pos = last_no = 0
-    if feed < 0:
-        return pos, lineno, i
     while True:
         if taken >= room or pos >= n:
             break
@@ -797,44 +800,22 @@ def _rotation_plan(plans: dict, key: str, words: tuple, pm: Any) -> tuple:
 
 def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
     """``move(line, plan)``: a straight move's words (:func:`_rotation_plan`) into the program point, the machine
-    point and the box, False (nothing changed) when the rotated point is uncertain.  ``PointMap.rotated``'s steps
-    written out (the same doubles, the same test: ``test_box_transforms`` holds them to it)."""
-    from .transform_points import FLOAT_EXACT as big
-    from .transform_points import GUARD as guard
-    from .transform_points import QUOTIENT as quot
-
+    point and the box, False (nothing changed) when the rotated point is uncertain (``PointMap.rotated``)."""
     p, lo, hi, off = st.p, st.lo, st.hi, st.off
-    ia, ib, ca, cb, c, s, step, per, exact = pm.ia, pm.ib, pm.ca, pm.cb, pm.c, pm.s, pm.st, pm.per, pm.exact
-    oa, ob, floor = off[ia], off[ib], math.floor
+    ia, ib, rotated = pm.ia, pm.ib, pm.rotated
+    oa, ob = off[ia], off[ib]
 
     def move(line: str, plan: tuple) -> bool:
         wa, ma, wb, mb, others = plan
         if wa is not None or wb is not None:
             a = int(line[wa]) * ma if wa is not None else prog[ia]
             b = int(line[wb]) * mb if wb is not None else prog[ib]
-            x = a - ca
-            y = b - cb
-            if -big < x < big and -big < y < big:
-                xd = float(x)
-                yd = float(y)
-                err = (abs(xd) + abs(yd)) * per
-                u = (xd * c - yd * s) / step
-                v = (xd * s + yd * c) / step
-                mu = floor(u)
-                mv = floor(v)
-                fu = u - mu
-                fv = v - mv
-                ok = abs(fu - 0.5) > err + abs(u) * quot + guard and abs(fv - 0.5) > err + abs(v) * quot + guard
-            else:
-                ok = False
-            if ok:
-                ma = ca + (mu + (fu > 0.5)) * step + oa
-                mb = cb + (mv + (fv > 0.5)) * step + ob
-            else:
-                got = exact(a, b)
-                if got is None:
-                    return False
-                ma, mb = got[0] + oa, got[1] + ob
+            got = rotated(a, b)
+            if got is None:
+                return False
+            ma, mb = got
+            ma += oa
+            mb += ob
             prog[ia] = a
             prog[ib] = b
             p[ia] = ma
@@ -847,10 +828,11 @@ def _rotation_mover(st: _Run, pm: Any, prog: list[int]) -> Any:
                 lo[ib] = mb
             elif mb > hi[ib]:
                 hi[ib] = mb
-        for sl, m, k in others:
-            w = int(line[sl]) * m
-            prog[k] = w
-            _box_at(p, lo, hi, k, w + off[k])
+        if others:
+            for sl, m, k in others:
+                w = int(line[sl]) * m
+                prog[k] = w
+                _box_at(p, lo, hi, k, w + off[k])
         return True
 
     return move

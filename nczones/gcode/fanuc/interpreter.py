@@ -1454,6 +1454,22 @@ class FanucInterpreter(Interpreter):
         self.recompute_offsets()
 
     # ------------------------------------------------------------------ canned cycles
+    def _holes_may_start(self, name: str, iz: int) -> bool:
+        """Whether :meth:`_fanuc_cycle` may drill (False: unknown said): the drilling axis ``iz`` not scaled,
+        mirrored or rotated, and a hole that is the first move after a transform's block (set or cancelled)
+        positioned in G90, as the manuals ask of that move; it then clears the flag (hunt42's H2)."""
+        if self.prog is not None and ((self.scaling is not None and self.scaling.factors[iz] != 1) or (
+                self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
+                self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib))):
+            self.unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
+            return False
+        if self._first_after_transform:
+            if not self.absolute:
+                self.unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
+                return False
+            self._first_after_transform = False
+        return True
+
     def _fanuc_cycle(self, axis_words: AxisWords, words: Words, block: Block) -> None:
         """A block in canned cycle mode (G73 G74 G76 G81-G86 G89): position, R point, the cycle, return.
 
@@ -1553,16 +1569,8 @@ class FanucInterpreter(Interpreter):
         top = initial if not self.retract_r else r
         top_deps = self.initial_level_deps if not self.retract_r and self.track else None
         transformed = self.prog is not None
-        if transformed:
-            if (self.scaling is not None and self.scaling.factors[iz] != 1) or (
-                    self.mirroring is not None and any(i == iz for i, _c in self.mirroring.axes)) or (
-                    self.rotation is not None and iz in (self.rotation.ia, self.rotation.ib)):
-                self.unknown(name, f"{name} with the drilling axis scaled, mirrored or rotated is not modelled")
-                return
-            if self._first_after_transform and not self.absolute:
-                self.unknown(name, f"the first {name} hole after a coordinate transform must be absolute (G90)")
-                return
-            self._first_after_transform = False
+        if not self._holes_may_start(name, iz):
+            return
         xy_words = [(i, aw) for i, aw in axis_words if i in (ix, iy)]
         for rep in range(reps):
             if rep and self.budget_gone(name, f"{kw.text if kw is not None else ''} had drilled {rep} holes", kw):

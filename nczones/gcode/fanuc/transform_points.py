@@ -31,7 +31,9 @@ from .transforms import TIE_GUARD, PointNotCertain, cos_sin_enclosure, rotate
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from typing import Any
+    from typing import Any, Callable
+
+    from .transforms import Rotation
 
 __all__ = ["PointMap", "rotation_doubles", "FLOAT_EXACT", "GUARD", "ROUNDING", "QUOTIENT"]
 
@@ -84,7 +86,7 @@ class PointMap:
     (1251, -1251, 3)
     """
 
-    __slots__ = ("axes", "rot", "step", "st", "unit", "ia", "ib", "ca", "cb", "c", "s", "per")
+    __slots__ = ("axes", "rot", "step", "st", "unit", "ia", "ib", "ca", "cb", "c", "s", "per", "rotated")
 
     axes: tuple[tuple[int, int, int, int] | None, ...]  # scaling: (centre, fn, fd, fd st) by axis, None: unmoved
     rot: Any
@@ -98,6 +100,10 @@ class PointMap:
     c: float
     s: float
     per: float
+    #: ``rotated(a, b)``: the rotated plane coordinates of the program's ``(a, b)`` (the rotation's axes), rounded
+    #: to the increment; None when ``transforms.rotate`` finds the point uncertain (module docstring).  A closure
+    #: over the map's numbers (:func:`_rotator`), not a method: the box reader calls it for every line it moves.
+    rotated: Callable[[int, int], tuple[int, int] | None]
 
     @classmethod
     def of(cls, xf: tuple, scale: int) -> PointMap | None:
@@ -128,6 +134,7 @@ class PointMap:
         pm.ia, pm.ib, pm.ca, pm.cb = rot.ia, rot.ib, ca, cb
         pm.c, pm.s, delta = rotation_doubles(rot.angle)
         pm.per = (delta + ROUNDING) / st
+        pm.rotated = _rotator(pm)
         return pm
 
     def factor(self, i: int) -> Fraction:
@@ -147,36 +154,45 @@ class PointMap:
         k = (2 * (n if n >= 0 else -n) + den) // (2 * den)
         return (k if n >= 0 else -k) * self.st
 
-    def rotated(self, a: int, b: int) -> tuple[int, int] | None:
-        """The rotated plane coordinates of the program's ``(a, b)`` (the rotation's axes), rounded to the
-        increment; None when ``transforms.rotate`` finds the point uncertain (module docstring)."""
-        x = a - self.ca
-        y = b - self.cb
-        if -FLOAT_EXACT < x < FLOAT_EXACT and -FLOAT_EXACT < y < FLOAT_EXACT:
+
+def _exact(rot: Rotation, step: Fraction, unit: int, a: int, b: int) -> tuple[int, int] | None:
+    """``(a, b)`` (units of ``1 / unit``) rotated by ``transforms.rotate`` (exact rationals), None when it finds
+    the point uncertain: ``PointMap.rotated`` where the double screen leaves the point."""
+    point = [Fraction(0)] * (max(rot.ia, rot.ib) + 1)
+    point[rot.ia], point[rot.ib] = Fraction(a, unit), Fraction(b, unit)
+    try:
+        got = rotate(rot, point, step)
+    except PointNotCertain:
+        return None
+    ra, rb = _at(got[rot.ia], unit), _at(got[rot.ib], unit)
+    assert ra is not None and rb is not None  # the centre and the increment are on the scale
+    return ra, rb
+
+
+def _rotator(pm: PointMap) -> Callable[[int, int], tuple[int, int] | None]:
+    """``PointMap.rotated`` of the rotation map ``pm``: the double screen of ``transform_columns`` on one point (its
+    docstring holds the soundness argument), :func:`_exact` for a coordinate of ``2**50`` units or more and for a
+    point the screen leaves.  The map's numbers are the closure's (no attribute is read per point)."""
+    ca, cb, c, s, step, per = pm.ca, pm.cb, pm.c, pm.s, pm.st, pm.per
+    rot, exact_step, unit = pm.rot, pm.step, pm.unit
+    low, big, quot, guard, floor = -FLOAT_EXACT, FLOAT_EXACT, QUOTIENT, GUARD, math.floor
+
+    def rotated(a: int, b: int) -> tuple[int, int] | None:
+        x = a - ca
+        y = b - cb
+        if low < x < big and low < y < big:
             xd = float(x)
             yd = float(y)
-            c, s, st = self.c, self.s, self.st
-            err = (abs(xd) + abs(yd)) * self.per
-            u = (xd * c - yd * s) / st
-            m = math.floor(u)
+            err = (abs(xd) + abs(yd)) * per
+            u = (xd * c - yd * s) / step
+            m = floor(u)
             frac = u - m  # exact: |u| < 2**50
-            if abs(frac - 0.5) > err + abs(u) * QUOTIENT + GUARD:  # (transform_columns._nearest's sum)
-                v = (xd * s + yd * c) / st
-                n = math.floor(v)
+            if abs(frac - 0.5) > err + abs(u) * quot + guard:  # (transform_columns._nearest's sum)
+                v = (xd * s + yd * c) / step
+                n = floor(v)
                 fv = v - n
-                if abs(fv - 0.5) > err + abs(v) * QUOTIENT + GUARD:
-                    return self.ca + (m + (frac > 0.5)) * st, self.cb + (n + (fv > 0.5)) * st
-        return self.exact(a, b)
+                if abs(fv - 0.5) > err + abs(v) * quot + guard:
+                    return ca + (m + (frac > 0.5)) * step, cb + (n + (fv > 0.5)) * step
+        return _exact(rot, exact_step, unit, a, b)
 
-    def exact(self, a: int, b: int) -> tuple[int, int] | None:
-        """:meth:`rotated` by ``transforms.rotate`` (exact rationals)."""
-        rot, unit = self.rot, self.unit
-        point = [Fraction(0)] * (max(rot.ia, rot.ib) + 1)
-        point[rot.ia], point[rot.ib] = Fraction(a, unit), Fraction(b, unit)
-        try:
-            got = rotate(rot, point, self.step)
-        except PointNotCertain:
-            return None
-        ra, rb = _at(got[rot.ia], unit), _at(got[rot.ib], unit)
-        assert ra is not None and rb is not None  # the centre and the increment are on the scale
-        return ra, rb
+    return rotated

@@ -478,16 +478,7 @@ class Comp:
                 self._row(_RAPID, corner)
             self.endpoint, self.valid = (mid_x, mid_y), True
         elif concave:
-            if not queue:
-                raise self.declined("a concave corner after the compensation queue was flushed")
-            if front:  # an arc held: its end pulled back (arc_line_back)
-                q = queue[0]
-                back = arc_line_back(self.side, self.radius, q[1], q[2], q[6], q[7], front, opx, opy, px, py)
-            else:
-                back = retreat(self.radius, cx, cy, beta, theta, gamma)
-            if back is None:
-                raise self.declined("a zero-degree inside corner or a gouge (LinuxCNC's error)")
-            self._flush(*back)
+            self._concave(front, cx, cy, beta, theta, gamma, opx, opy, px, py)
         else:  # straight on
             self._dequeue()
             self.endpoint, self.valid = (cx, cy), True
@@ -523,22 +514,31 @@ class Comp:
             # the corner move, held and emitted at once (CutterComp: _enqueue, then _dequeue)
             self._corner(kind, mid_x, mid_y, row, before)
         elif concave:
-            if not queue:
-                raise self.declined("a concave corner after the compensation queue was flushed")
-            if front:  # an arc held: its end pulled back (arc_line_back)
-                q = queue[0]
-                back = arc_line_back(self.side, self.radius, q[1], q[2], q[6], q[7], front, opx, opy, px, py)
-            else:
-                back = retreat(self.radius, cx, cy, beta, theta, gamma)
-            if back is None:
-                raise self.declined("a zero-degree inside corner or a gouge (LinuxCNC's error)")
-            self._flush(*back)
+            self._concave(front, cx, cy, beta, theta, gamma, opx, opy, px, py)
         else:  # straight on
             self._dequeue()
             self.endpoint, self.valid = (cx, cy), True
         queue = self.queue
         queue.append([kind, end_x, end_y, px - opx, py - opy, row])
         self.cur, self.prog = (end_x, end_y), (px, py)
+
+    def _concave(self, front: int, cx: float, cy: float, beta: float, theta: float, gamma: float, opx: float,
+                 opy: float, px: float, py: float) -> None:
+        """A concave corner before the straight move from ``(opx, opy)`` to ``(px, py)`` (:meth:`line`,
+        :meth:`_next`; ``line_corner``'s ``beta``, ``theta``, ``gamma``): the held moves flushed to where the
+        queue's end is pulled back (``arc_line_back`` when an arc of turn ``front`` is held, else ``retreat`` from
+        ``(cx, cy)``); declined as LinuxCNC errs (no held move, a zero-degree corner or a gouge)."""
+        queue = self.queue
+        if not queue:
+            raise self.declined("a concave corner after the compensation queue was flushed")
+        if front:  # an arc held: its end pulled back (arc_line_back)
+            q = queue[0]
+            back = arc_line_back(self.side, self.radius, q[1], q[2], q[6], q[7], front, opx, opy, px, py)
+        else:
+            back = retreat(self.radius, cx, cy, beta, theta, gamma)
+        if back is None:
+            raise self.declined("a zero-degree inside corner or a gouge (LinuxCNC's error)")
+        self._flush(*back)
 
     def _corner(self, kind: int, mid_x: float, mid_y: float, row: Any, before: tuple[float, float, float]) -> None:
         """A convex corner's move to ``(mid_x, mid_y)`` (an arc about the programmed corner ``before``, a

@@ -119,3 +119,58 @@ def probe_route(text: str, machine, file: str, *, runs: bool = True, route: bool
         except GcodeError as e:
             result = e
     return result, tested, taken[0]
+
+
+#: The box route tests' zone on :func:`mill`: machine X -10..150, Y -10..90, Z -201..0 (at G54 and EXT Z = 1:
+#: program X -110..50, Y -60..40, Z -2..199).
+BOX_ZONE = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
+            'max = { X = "150", Y = "90", Z = "0" }\n')
+
+
+def final_state(text: str, machine, *, runs: bool) -> tuple:
+    """The interpreter's and the runner's state once the box route (``fanucboxes.prove_boxes``) read ``text``,
+    the box run reader on or off (``runs``: ``boxrun.BOX_RUNS``); ``()`` when the route did not run.
+
+    The state: the machine and program points, motion, feed, blocks, motion count and counts by kind, block index
+    and span, the cycle's initial level, the pending rotation start, the modes noted as assumed, whether a
+    transform was just cancelled, and the runner's block index.
+    """
+    import pytest
+
+    from nczones.gcode.fanuc import boxrun
+    from nczones.prover import fanucboxes, verify_text
+
+    got: list = []
+    real = fanucboxes.prove_boxes
+
+    def prove(run, *a, **k):
+        result = real(run, *a, **k)
+        it = run.interpreter
+        runner = next(iter(run.runners), None)
+        got.append((tuple(it.pos), tuple(it.prog or ()), it.motion, it.feed, it.blocks, it.segment_count,
+                    sorted(it.kind_counts.items()), it.block_index, it.span, it.cycle_il, it.prerotation_xy_next,
+                    dict(it.assumed), it.transform_just_cancelled, getattr(runner, "index", None)))
+        return result
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(boxrun, "BOX_RUNS", runs)
+        mp.setattr(fanucboxes, "prove_boxes", prove)
+        verify_text(text, machine, file="t.nc")
+    return got[0] if got else ()
+
+
+def assert_state_handed_back(text: str, machine) -> None:
+    """The box run reader leaves :func:`final_state` as the path without it does, or raises the GcodeError (code
+    and message) that path raises (a drawn program the interpreter refuses)."""
+    import pytest
+
+    from nczones.errors import GcodeError
+
+    try:
+        without = final_state(text, machine, runs=False)
+    except GcodeError as exc:
+        with pytest.raises(GcodeError) as read:
+            final_state(text, machine, runs=True)
+        assert (read.value.code, str(read.value)) == (exc.code, str(exc))
+        return
+    assert final_state(text, machine, runs=True) == without

@@ -38,18 +38,15 @@ from hypothesis import strategies as st
 
 from nczones.errors import GcodeError
 from nczones.gcode.fanuc import boxrun
-from nczones.prover import fanucboxes, verify_text
-from tests.gcode.fanuc.helpers import mill, probe_route
+from tests.gcode.fanuc.helpers import BOX_ZONE, assert_state_handed_back, mill, probe_route
 
-_TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
-           'max = { X = "150", Y = "90", Z = "0" }\n')
-_MACHINE = mill(tables=_TRAVEL)
+_MACHINE = mill(tables=BOX_ZONE)
 #: examples of the default run (fixed when at most 200: the CI size) and of the long hunts (drawn anew)
 EXAMPLES = int(os.environ.get("NCZONES_BOX_RUN_EXAMPLES", "40"))
 HUNT = int(os.environ.get("NCZONES_BOX_RUN_HUNT", "300"))
 _FIXED = EXAMPLES <= 200
 #: a zone the generated programs mostly stay in (a program that leaves it costs a witness search on each side)
-_WIDE = mill(tables=_TRAVEL.replace('"-10"', '"-2000"').replace('"-201"', '"-2000"').replace('"150"', '"2000"')
+_WIDE = mill(tables=BOX_ZONE.replace('"-10"', '"-2000"').replace('"-201"', '"-2000"').replace('"150"', '"2000"')
              .replace('"90"', '"2000"').replace('Z = "0"', 'Z = "2000"'))
 #: vectors of length 5 (exact: an I/J arc's start and end on one circle)
 _FIVE = [(3, 4), (4, 3), (5, 0), (0, 5), (-3, 4), (-4, -3), (0, -5), (-5, 0), (3, -4), (4, -3)]
@@ -317,27 +314,6 @@ def test_a_program_the_reader_declines_line_by_line_is_tried_seldom(monkeypatch)
     assert (read, boxes) == _run(text, False)[:2]
 
 
-def _final_state(text: str, runs: bool) -> tuple:
-    """The interpreter's and the runner's state after the route read ``text`` (the reader on or off)."""
-    got: list = []
-    real = fanucboxes.prove_boxes
-
-    def prove(run, *a, **k):
-        result = real(run, *a, **k)
-        it = run.interpreter
-        runner = next(iter(run.runners), None)
-        got.append((tuple(it.pos), it.motion, it.feed, it.blocks, it.segment_count, sorted(it.kind_counts.items()),
-                    it.block_index, it.span, it.cycle_il, it.prerotation_xy_next,
-                    getattr(runner, "index", None)))
-        return result
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(boxrun, "BOX_RUNS", runs)
-        mp.setattr(fanucboxes, "prove_boxes", prove)
-        verify_text(text, _WIDE, file="t.nc")
-    return got[0] if got else ()
-
-
 @settings(max_examples=max(3, EXAMPLES * 3 // 8), deadline=None, database=None, derandomize=_FIXED,
           suppress_health_check=[HealthCheck.too_slow])
 @given(_programs())
@@ -356,15 +332,8 @@ def test_the_reader_hands_the_state_back_long(program):
 
 
 def _state_handed_back(text: str) -> None:
-    text = text[:text.rindex("M30")]
-    try:
-        lanes = _final_state(text, False)
-    except GcodeError as exc:  # a drawn program the interpreter refuses (K in G17 after a plane change): so does the reader
-        with pytest.raises(GcodeError) as read:
-            _final_state(text, True)
-        assert (read.value.code, str(read.value)) == (exc.code, str(exc))
-        return
-    assert _final_state(text, True) == lanes
+    # (a drawn program the interpreter refuses, K in G17 after a plane change: so does the reader)
+    assert_state_handed_back(text[:text.rindex("M30")], _WIDE)
 
 
 @pytest.mark.long

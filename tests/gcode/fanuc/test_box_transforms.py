@@ -24,7 +24,6 @@ from __future__ import annotations
 import os
 from fractions import Fraction
 
-import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -32,12 +31,9 @@ from nczones.errors import GcodeError
 from nczones.gcode.fanuc import boxrun
 from nczones.gcode.fanuc.transform_points import PointMap
 from nczones.gcode.fanuc.transforms import PointNotCertain, Rotation, Scaling, rotate, scale
-from nczones.prover import fanucboxes, verify_text
-from tests.gcode.fanuc.helpers import mill, probe_route
+from tests.gcode.fanuc.helpers import BOX_ZONE, assert_state_handed_back, mill, probe_route
 
-_TRAVEL = ('\n[[zones]]\nname = "box"\nkind = "box"\nmin = { X = "-10", Y = "-10", Z = "-201" }\n'
-           'max = { X = "150", Y = "90", Z = "0" }\n')
-_MACHINE = mill(tables=_TRAVEL)
+_MACHINE = mill(tables=BOX_ZONE)
 EXAMPLES = int(os.environ.get("NCZONES_BOX_TRANSFORMS_EXAMPLES", "12"))
 _STEP = Fraction(1, 1000)
 _UNIT = 10**9
@@ -147,41 +143,12 @@ def test_the_reader_takes_rotated_lines_and_leaves_a_tie():
     assert verdict == "unknown" and taken < 42
 
 
-def _final_state(text: str, runs: bool) -> tuple:
-    """The interpreter's and the runner's state after the route read ``text`` (the reader on or off)."""
-    got: list = []
-    real = fanucboxes.prove_boxes
-
-    def prove(run, *a, **k):
-        result = real(run, *a, **k)
-        it = run.interpreter
-        runner = next(iter(run.runners), None)
-        got.append((tuple(it.pos), tuple(it.prog or ()), it.motion, it.feed, it.blocks, it.segment_count,
-                    sorted(it.kind_counts.items()), it.block_index, it.span, it.cycle_il, it.prerotation_xy_next,
-                    dict(it.assumed), it.transform_just_cancelled, getattr(runner, "index", None)))
-        return result
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(boxrun, "BOX_RUNS", runs)
-        mp.setattr(fanucboxes, "prove_boxes", prove)
-        verify_text(text, _MACHINE, file="t.nc")
-    return got[0] if got else ()
-
-
 @settings(max_examples=max(3, EXAMPLES // 3), deadline=None, database=None, derandomize=EXAMPLES <= 200,
           suppress_health_check=[HealthCheck.too_slow])
 @given(_programs())
 def test_the_reader_hands_the_state_back_as_the_general_path_leaves_it(text):
     """A program that ends under the transform (the text ends there): the state is the interpreter's."""
-    text = text[:text.rindex("\nG69\n" if "\nG69\n" in text else "\nG50\n") + 1]
-    try:
-        general = _final_state(text, False)
-    except GcodeError as exc:
-        with pytest.raises(GcodeError) as read:
-            _final_state(text, True)
-        assert (read.value.code, str(read.value)) == (exc.code, str(exc))
-        return
-    assert _final_state(text, True) == general
+    assert_state_handed_back(text[:text.rindex("\nG69\n" if "\nG69\n" in text else "\nG50\n") + 1], _MACHINE)
 
 
 def test_the_first_move_after_a_cancel_is_the_general_paths():

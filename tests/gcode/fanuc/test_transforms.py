@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import replace
 from fractions import Fraction as Q
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -17,7 +18,7 @@ from nczones.machine import parse_machine
 from nczones.prover import verify_text
 from tests.machines import machine_text
 
-from .helpers import ends, mill
+from .helpers import BOX_ZONE, ends, mill, probe_route
 
 START = "G90 G17 G54 G0 X0 Y0 Z0\n"
 
@@ -97,6 +98,49 @@ def test_transform_combinations_and_unmodelled_uses_are_unknown():
 def test_first_move_after_cancel_must_be_absolute():
     _, run = segs(START + "G68 X0 Y0 R10.\nG1 X5. F100.\nG69\nG91 G1 X1.\n")
     assert run.status == "unknown" and run.unsupported[0].span.line == 5
+
+
+_TRANSFORM_PAIRS = [("G68 X0 Y0 R90.", "G69"), ("G51 X0 Y0 Z0 I2. J2. K1.", "G50")]
+
+
+def _hole_after_cancel(on: str, off: str, holes: int = 0) -> str:
+    """hunt42's H2: a hole line in G90 right after the cancel, ``holes`` more, then an incremental move."""
+    more = "".join(f"X{k % 7}. Y{k % 5}.\n" for k in range(holes))
+    return (f"G17 G40 G80 G21 G90 G54 F300.\nG00 Z20.\n{on}\nG90 G00 X1. Y1. Z10.\nG81 X2. Y2. Z-1. R2. F200.\n"
+            f"{off}\nX5. Y5.\n{more}G80\nG91 G01 X1. Y1.\nM30\n")
+
+
+@pytest.mark.parametrize(("on", "off"), _TRANSFORM_PAIRS)
+def test_a_hole_in_g90_is_the_first_move_after_a_cancel(on, off):
+    """The hole line ``X5. Y5.`` (G90) after G69 / G50 is the absolute first move the manuals ask for: the later
+    G91 move is read (from the last hole, machine (105, 55) at G54, to (106, 56)); the fast path (600 holes more:
+    the vectorized hole template) gives the same segments, and the box route the full path's verdict."""
+    out, run = segs(_hole_after_cancel(on, off))
+    assert run.status == "complete", run.unsupported
+    assert tuple(out[-1].end[:2]) == (106, 56)
+    assert [s.end for s in out if s.end[2] == -200][-1][:2] == (105, 55)  # the hole after the cancel, unmoved
+    text = _hole_after_cancel(on, off, 600)
+    full = interpret_text(text, mill(), fast=False)
+    fast = interpret_text(text, mill(), fast=True)
+    assert [(s.kind, s.start, s.end) for s in fast.segments()] == [(s.kind, s.start, s.end) for s in full.segments()]
+    assert full.status == fast.status == "complete" and fast.fast_lines > 0
+    zone = mill(tables=BOX_ZONE)
+    for program in (_hole_after_cancel(on, off), text):  # the box route with its reader, without it, no route
+        got = [probe_route(program, zone, "t.nc", runs=runs, route=route)[0]
+               for runs, route in ((True, True), (False, True), (True, False))]
+        assert {(r.verdict.label, tuple(r.reasons)) for r in got} == {("safe", ())}
+
+
+@pytest.mark.parametrize(("on", "off"), _TRANSFORM_PAIRS)
+def test_an_incremental_hole_right_after_a_cancel_is_unknown(on, off):
+    """A G91 hole as the first move after G69 / G50 is an incremental first move, which the manuals give no
+    meaning (as a G91 G01 there): unknown at that line on the full path and the fast path, not drilled."""
+    text = (f"G17 G40 G80 G21 G90 G54 F300.\nG00 Z20.\n{on}\nG90 G00 X1. Y1. Z10.\n{off}\n"
+            "G91 G81 X5. Y5. Z-5. R-8. F200.\nX1.\nG80\nG90 G00 X0. Y0.\nM30\n")
+    for fast in (False, True):
+        run = interpret_text(text, mill(), fast=fast)
+        list(run.segments())
+        assert run.status == "unknown" and [(u.code, u.span.line) for u in run.unsupported] == [("G81", 6)], fast
 
 
 # ---------------------------------------------------------------- parameter ranges through a transform
