@@ -150,6 +150,14 @@ def _unknown(n: int, why: str) -> SystemVariableUnknown:
     return SystemVariableUnknown(f"#{n}", why)
 
 
+def _last(it: MacroState, n: int, letter: str) -> tuple:
+    """``#n``, the last word ``letter`` (D, M or N) read: vacant before the first (:func:`_alone` for N)."""
+    last = it.last.get(letter)
+    if letter == "N":
+        _alone(it, n, last)
+    return VACANT if last is None else _value(last)
+
+
 def _alone(it: MacroState, n: int, last: Fraction | None) -> None:
     """Unknown when ``#n`` (the last N) differs as a line with an N and no NC word counts or not: such a line
     (``N25`` alone, a macro statement's label) is no block for this reader, and whether the control's last
@@ -310,10 +318,7 @@ def read(it: MacroState, n: int) -> tuple:
             return _value(Fraction(it.tool_selected))
         if letter == "P":
             return _value(Fraction(int(it.wcs[6:]))) if it.wcs.startswith("G54.1P") else VACANT
-        last = it.last.get(letter)
-        if letter == "N":
-            _alone(it, n, last)
-        return VACANT if last is None else _value(last)
+        return _last(it, n, letter)
     raise _unknown(n, f"system variable #{n} is not one nczones models (specs/fanuc.md lists those it does)")
 
 
