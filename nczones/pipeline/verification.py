@@ -181,7 +181,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
                    interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
-                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
 
 
@@ -294,7 +294,7 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                                  else quick.verdict))
     return replace(quick, budget_s=limits.budget_s,
                    timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
-                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
