@@ -702,7 +702,6 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     (parameter, value as ``--param`` writes it).
     """
     from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
-    from .witnesses import replayed_witnesses
 
     ranges = options.ranges(machine)
     cases = [ranges]
@@ -743,9 +742,14 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
             break
     result = merge(results, max_violations=options.max_violations, params=ranges)
     # a witness must replay: one at values where the control stops before its line is dropped
-    # (on the run's budget: an unchecked witness is not reported, VF203/VF204)
-    result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
-                                                                            skip=skip), options.run_limits())
+    # (on the run's budget: an unchecked witness is not reported, VF203/VF204); only a witness at parameter
+    # values has anything to replay (replayed_witnesses gives any other result back): without one, its module
+    # is not imported (issue 36)
+    if any(v.params for v in result.violations):
+        from .witnesses import replayed_witnesses
+
+        result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
+                                                                                skip=skip), options.run_limits())
     if splits:
         where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
         result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "
