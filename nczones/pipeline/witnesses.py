@@ -80,12 +80,11 @@ from ..prover.result import Reason, Result, Verdict, Violation
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from typing import Any
 
     from ..gcode import Interpretation
     from ..machine import Machine
     from ..motion import Segment
-    from typing import Any
-
     from ..prover.limits import RunLimits
 
     _Values = tuple[tuple[str, Fraction], ...]
