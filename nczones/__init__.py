@@ -16,6 +16,29 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
+
+def _as_the_program() -> None:
+    """In the ``nczones`` program (its console script, whose ``__main__`` imports :mod:`nczones.cli`), raise the
+    collector's first threshold now, as :func:`nczones.cli.run` does once called: the modules a start imports
+    make some 20,000 objects, all of which live, and at Python's threshold of 700 the dozen collections they set
+    off before ``run`` traverse them for nothing (some 5 million instructions, issue 36).  Raised, never
+    lowered; 0 (collection off) stays 0.  An ``import nczones`` in any other program changes nothing."""
+    import sys
+
+    script = getattr(sys.modules.get("__main__"), "__file__", None)
+    if not isinstance(script, str) or script.replace("\\", "/").rsplit("/", 1)[-1] not in ("nczones",
+                                                                                           "nczones-script.py"):
+        return
+    import gc
+
+    first, second, third = gc.get_threshold()
+    if 0 < first < 50_000:  # nczones.cli.YOUNG_OBJECTS
+        gc.set_threshold(50_000, second, third)
+
+
+_as_the_program()
+del _as_the_program
+
 from .precompiled import seed_patterns  # noqa: E402
 
 seed_patterns()  # re.compile finds the patterns of a start-up compiled (issue 36: see nczones.precompiled)

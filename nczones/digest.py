@@ -20,7 +20,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:
     from typing import Any
 
-__all__ = ["sha256", "OWN_BELOW"]
+__all__ = ["sha256", "OWN_BELOW", "LaterDigest"]
 
 #: Inputs of fewer bytes are hashed by CPython's built-in SHA-256 (no OpenSSL to load); larger ones by hashlib's.
 OWN_BELOW = 1 << 20
@@ -43,3 +43,57 @@ def sha256(data: bytes | None = None) -> Any:
     import hashlib
 
     return hashlib.sha256(b"" if data is None else data)
+
+
+class LaterDigest:
+    """The SHA-256 (hex) of some bytes, computed when first asked for (:attr:`hex`), then kept.
+
+    A program's digest is read only by the reports that name what they verified (JSON, SARIF, replay, the
+    fleet's store); a text report never asks, and hashing a 200 KB program costs some 9 million instructions
+    of a verify (issue 36).  Either the bytes (hashed later) or the digest already known (a streamed file's,
+    computed as it was read) is given.  Two equal digests compare equal whether computed yet or not, and equal
+    to the ``str`` of the digest; a pickled one is its digest (the bytes are not sent along).
+
+    >>> d = LaterDigest(b"abc")
+    >>> d.known, d.hex[:16], d.known, d == LaterDigest(known=d.hex), d == d.hex
+    (False, 'ba7816bf8f01cfea', True, True, True)
+    """
+
+    __slots__ = ("_data", "_hex")
+
+    def __init__(self, data: bytes | None = None, known: str = "") -> None:
+        self._data = None if known else data
+        self._hex = known
+
+    @property
+    def known(self) -> bool:
+        """Whether the digest has been computed (or was given)."""
+        return bool(self._hex)
+
+    @property
+    def hex(self) -> str:
+        """The 64 hex digits of the SHA-256 (computed now at the first call)."""
+        if not self._hex:
+            self._hex = sha256(self._data or b"").hexdigest()
+            self._data = None
+        return self._hex
+
+    def __str__(self) -> str:
+        return self.hex
+
+    def __repr__(self) -> str:
+        return f"LaterDigest(known={self.hex!r})"
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, LaterDigest):
+            return other is self or self.hex == other.hex
+        if isinstance(other, str):
+            return self.hex == other
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self.hex)
+
+    def __reduce__(self) -> tuple[Any, tuple[str]]:
+        return str, (self.hex,)
+

@@ -394,7 +394,7 @@ def combine(parts: Sequence[tuple[Any, Chunk]], max_violations: int, program_sha
     counts["blocks"] = blocks_before
     return replace(first, verdict=verdict, violations=tuple(violations), reasons=(), engines=tuple(engines),
                    notes=tuple(notes), stats=tuple(stats.items()), timings=tuple(timings.items()),
-                   truncated=truncated, program_sha256=program_sha256,
+                   truncated=truncated, program_digest=program_sha256,
                    extra={**first.extra, "counts": counts, "chunks": len(parts)})
 
 

@@ -40,6 +40,7 @@ import sys
 from collections.abc import Iterator
 
 from .. import digest as hashlib  # hashlib.sha256 without loading OpenSSL (start-up)
+from ..digest import LaterDigest
 from ..errors import EXCERPT_CHARS, Diagnostic, GcodeError, InvalidArgument, SourceSpan
 from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
 
@@ -75,15 +76,22 @@ class ProgramSource:
     """A program's text, its name and the SHA-256 of its bytes (UTF-8 for text given directly).
 
     ``path`` is the file it was read from (``None`` for standard input and
-    text given directly).
+    text given directly).  ``digest`` holds the bytes until :attr:`sha256` is
+    first asked for (:class:`~nczones.digest.LaterDigest`): a text report
+    never hashes the program.
     """
 
     text: str
     name: str
-    sha256: str
+    digest: LaterDigest
     path: str | None = None
     #: What reading assumed (a byte order mark, comment bytes read as CP1252); verify reports them as notes.
     notes: tuple[str, ...] = ()
+
+    @property
+    def sha256(self) -> str:
+        """The SHA-256 (hex) of the program's bytes, computed at the first call."""
+        return self.digest.hex
 
     @property
     def is_empty(self) -> bool:
@@ -240,7 +248,7 @@ def _check_lines(text: str, name: str) -> None:
 def _source(data: bytes, name: str, path: str | None) -> ProgramSource:
     text, notes = _decode(data, name)
     _check_lines(text, name)
-    return ProgramSource(text, name, hashlib.sha256(data).hexdigest(), path, notes)
+    return ProgramSource(text, name, LaterDigest(data), path, notes)
 
 
 def load_program(path: str | os.PathLike, name: str | None = None, *, stream: bool = False) -> ProgramSource:
@@ -293,7 +301,7 @@ def program_text(text: str, name: str = "<program>") -> ProgramSource:
     if not isinstance(text, str):
         raise InvalidArgument(f"program text must be a str, not {type(text).__name__}")
     _check_lines(text, name)
-    return ProgramSource(text, name, hashlib.sha256(text.encode("utf-8", errors="surrogatepass")).hexdigest())
+    return ProgramSource(text, name, LaterDigest(text.encode("utf-8", errors="surrogatepass")))
 
 
 def as_source(program: ProgramLike, *, file: str | None = None, text_function: str = "interpret_text") -> ProgramSource:
@@ -377,7 +385,7 @@ def _streamed(path: str, name: str) -> ProgramSource | None:
     except OSError:
         os.close(fd)
         return None
-    return ProgramSource(text, name, digest.hexdigest(), path)  # type: ignore[arg-type]
+    return ProgramSource(text, name, LaterDigest(known=digest.hexdigest()), path)  # type: ignore[arg-type]
 
 
 def _final(decoder: codecs.IncrementalDecoder) -> bool:

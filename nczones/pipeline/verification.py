@@ -181,7 +181,7 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     return replace(result, verdict=verdict, violations=tuple(violations), reasons=tuple(reasons), notes=notes,
                    interrupted=interrupted, budget_s=limits.budget_s, profile=profile.as_dict(),
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
-                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
 
 
@@ -294,7 +294,7 @@ def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyO
                                  else quick.verdict))
     return replace(quick, budget_s=limits.budget_s,
                    timings=(("total_s", time.perf_counter() - t0),) + quick.timings,
-                   program_sha256=source.sha256, machine_name=machine.name, machine_file=machine.source,
+                   program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings, file=source.name)
 
 
@@ -702,7 +702,6 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     (parameter, value as ``--param`` writes it).
     """
     from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
-    from .witnesses import replayed_witnesses
 
     ranges = options.ranges(machine)
     cases = [ranges]
@@ -743,9 +742,14 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
             break
     result = merge(results, max_violations=options.max_violations, params=ranges)
     # a witness must replay: one at values where the control stops before its line is dropped
-    # (on the run's budget: an unchecked witness is not reported, VF203/VF204)
-    result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
-                                                                            skip=skip), options.run_limits())
+    # (on the run's budget: an unchecked witness is not reported, VF203/VF204); only a witness at parameter
+    # values has anything to replay (replayed_witnesses gives any other result back): without one, its module
+    # is not imported (issue 36)
+    if any(v.params for v in result.violations):
+        from .witnesses import replayed_witnesses
+
+        result = replayed_witnesses(result, machine, lambda m: interpretation(source, m, replace(options, params=()),
+                                                                                skip=skip), options.run_limits())
     if splits:
         where = ", ".join(f"{n} = {format_decimal(v)}" for n, v in splits)
         result = replace(result, notes=result.notes + (f"the path branches inside the parameter ranges (a canned "

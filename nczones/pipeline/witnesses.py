@@ -69,7 +69,6 @@ own handler raises ``KeyboardInterrupt``).
 
 from __future__ import annotations
 
-from contextlib import nullcontext
 from fractions import Fraction
 from types import MappingProxyType
 
@@ -81,6 +80,7 @@ from ..prover.result import Reason, Result, Verdict, Violation
 TYPE_CHECKING = False
 if TYPE_CHECKING:
     from collections.abc import Callable
+    from typing import Any
 
     from ..gcode import Interpretation
     from ..machine import Machine
@@ -166,7 +166,7 @@ def _replay_groups(groups: dict[_Values, dict[_Where, list[Violation]]], machine
                 break
             else:
                 at_values, shift = concrete_machine(machine, dict(params))
-                with limits.watch() if limits is not None else nullcontext():  # its loops ask the budget
+                with limits.watch() if limits is not None else _no_limits():  # its loops ask the budget
                     unreached = _unreached(interpret, at_values, params, at_line, shift, margin)
                 dropped.update(unreached)
                 for k, vs in at_line.items():
@@ -335,3 +335,11 @@ def _written(x: Fraction) -> str:
     from ..exact import format_rational
 
     return format_rational(x)
+
+
+def _no_limits() -> Any:
+    """:func:`contextlib.nullcontext`, imported when first needed (a verify has limits; issue 36)."""
+    from contextlib import nullcontext
+
+    return nullcontext()
+

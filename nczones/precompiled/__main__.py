@@ -53,17 +53,39 @@ def source(found: list[str]) -> str:
 
 
 #: The start-ups whose regular expressions are precompiled: small verifies of each dialect and format (the
-#: double pass too), the help, a machine check (``{d}``: a scratch directory, ``{m}``: specs/machines).
+#: double pass and the Fanuc box reader too), the help, a machine check (``{d}``: a scratch directory, ``{m}``: specs/machines).
 SCENARIOS = (
     ["verify", "{d}/tiny.ngc", "--machine", "{m}/mill.toml", "--format", "json"],
     ["verify", "{d}/tiny.ngc", "--machine", "{m}/mill.toml"],
     ["verify", "{d}/param.ngc", "--machine", "{m}/mill.toml"],
     ["verify", "{d}/tiny.nc", "--machine", "{m}/fanuc_mill.toml", "--format", "json"],
     ["verify", "{d}/tiny.nc", "--machine", "{m}/fanuc_mill.toml"],
+    ["verify", "{d}/tape.nc", "--machine", "{d}/box_fanuc.toml"],
     ["check-machine", "{m}/mill.toml"],
     ["--help"],
     ["verify", "--help"],
 )
+
+#: A Fanuc machine whose zones are boxes (the Fanuc box reader, ``gcode.fanuc.boxrun``, runs on such a machine).
+_BOX_FANUC = """[machine]
+name = "box"
+axes = ["X", "Y", "Z"]
+pulse = "0.001"
+dialect = "fanuc"
+[machine.rapid]
+X = "10000"
+Y = "10000"
+Z = "10000"
+[machine.reference]
+X = "0"
+Y = "0"
+Z = "0"
+[[zones]]
+name = "travel"
+kind = "box"
+min = { X = "-1000", Y = "-1000", Z = "-1000" }
+max = { X = "1000", Y = "1000", Z = "1000" }
+"""
 
 _RUN = """import contextlib, io, sys, json
 from nczones.cli import main
@@ -84,6 +106,9 @@ def patterns() -> list[tuple[str, str, int]]:
         Path(d, "tiny.ngc").write_text("G21 G90\nG0 X1 Y1\nG1 X2 Y2 F100\nM2\n", encoding="utf-8")
         Path(d, "param.ngc").write_text("G21 G90 F100\n#1 = 2.5\nG1 X[#1 * 2] Y[#1 + 1]\nM2\n", encoding="utf-8")
         Path(d, "tiny.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n", encoding="utf-8")
+        # a program between % lines with its O number on a machine of boxes: the Fanuc box reader's patterns (boxrun)
+        Path(d, "tape.nc").write_text("%\nO0001\nG21 G90 G54\nG01 X1. Y1. F100.\nM30\n%\n", encoding="utf-8")
+        Path(d, "box_fanuc.toml").write_text(_BOX_FANUC, encoding="utf-8")  # box zones only: the box reader runs
         found = set()
         for argv in SCENARIOS:
             args = [a.format(d=d, m=PACKAGE.parent / "specs" / "machines") for a in argv]

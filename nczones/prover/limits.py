@@ -50,10 +50,10 @@ interrupt, a partial result that says so).
 from __future__ import annotations
 
 import _thread
+import functools
 import os
 import time
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
 
 from ..gcode.runner_common import WATCHED_LIMITS
 
@@ -77,6 +77,22 @@ NONLINEAR_RLIMIT = 5_000_000
 
 if TYPE_CHECKING:
     _Active = tuple[int, Any, "float | None", str]
+
+def _contextmanager(steps: Callable[..., Iterator[Any]]) -> Callable[..., Any]:
+    """:func:`contextlib.contextmanager` of ``steps``, made at the first call: a verify that asks no solver
+    query never imports :mod:`contextlib` (18 classes, some 3 million instructions of its start-up, issue 36)."""
+    made: list[Callable[..., Any]] = []
+
+    @functools.wraps(steps)
+    def manager(*args: Any, **kwargs: Any) -> Any:
+        if not made:
+            from contextlib import contextmanager
+
+            made.append(contextmanager(steps))
+        return made[0](*args, **kwargs)
+
+    return manager
+
 
 class BudgetSpent(Exception):
     """Raised inside the prover when the program's budget is spent (control flow, never shown)."""
@@ -148,7 +164,7 @@ class RunLimits:
 
     # ------------------------------------------------------------------ queries
 
-    @contextmanager
+    @_contextmanager
     def query(self, ctx: Any) -> Iterator[Callable[[], str]]:
         """Around one Z3 call on ``ctx``: the watchdog may interrupt it.
 
@@ -194,27 +210,35 @@ class RunLimits:
 
     # ------------------------------------------------------------------ watchdog
 
-    @contextmanager
-    def watch(self) -> Iterator[RunLimits]:
-        """Run the watchdog (backstop, budget, Ctrl-C) for the duration of the block.
+    def watch(self) -> _Watch:
+        """Run the watchdog (backstop, budget, Ctrl-C) for the duration of the block (``with lim.watch():``).
 
         Ctrl-C is watched only when called from the main thread (where
         Python delivers signals); the previous wakeup fd is restored after
         and still receives the signal bytes.  The watchdog starts with the
         block's first solver query (:meth:`query`).
         """
-        if self._watching:  # nested: the outer watch does the work
-            yield self
-            return
+        return _Watch(self)
+
+    def _begin_watch(self) -> object:
+        """What entering :meth:`watch`'s block does: the context token to reset, or None (nested: the outer watch
+        does the work)."""
+        if self._watching:
+            return None
         token = WATCHED_LIMITS.set(self)
         self._watching = True
+        return token
+
+    def _end_watch(self, token: object) -> None:
+        """What leaving :meth:`watch`'s block does (however it is left), given what :meth:`_begin_watch` gave."""
+        if token is None:
+            return
+        self._watching = False
         try:
-            yield self
-        finally:
-            self._watching = False
             if self._thread is not None:
                 self._stop_watchdog()
-            WATCHED_LIMITS.reset(token)
+        finally:
+            WATCHED_LIMITS.reset(token)  # type: ignore[arg-type]
 
     def _start_watchdog(self) -> None:
         """Start the watchdog thread, with the wake-up fd where this is the main thread (the first query)."""
@@ -330,7 +354,7 @@ class _Wake:
             os.close(self.w)
 
 
-@contextmanager
+@_contextmanager
 def interpretation_budget(budget_s: float | None = DEFAULT_BUDGET_S) -> Iterator[RunLimits]:
     """Bound the interpretation run inside the block by ``budget_s`` seconds (None: no bound), for the commands
     that interpret without proving (``simulate``, ``plot``): the interpreters' repetitions ask it as they ask
@@ -342,3 +366,22 @@ def interpretation_budget(budget_s: float | None = DEFAULT_BUDGET_S) -> Iterator
         yield lim
     finally:
         WATCHED_LIMITS.reset(token)
+
+
+class _Watch:
+    """The block of :meth:`RunLimits.watch`: a class, not a :func:`contextlib.contextmanager` (every verify
+    watches; :mod:`contextlib` is not imported for it, issue 36)."""
+
+    __slots__ = ("limits", "token")
+
+    def __init__(self, limits: RunLimits) -> None:
+        self.limits = limits
+        self.token: object = None
+
+    def __enter__(self) -> RunLimits:
+        self.token = self.limits._begin_watch()
+        return self.limits
+
+    def __exit__(self, *exc: object) -> None:
+        self.limits._end_watch(self.token)
+

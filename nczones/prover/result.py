@@ -9,6 +9,11 @@ from ..errors import SourceSpan
 from ..motion import ProgramFrame
 from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from ..digest import LaterDigest
+
 __all__ = ["Verdict", "Violation", "Reason", "Result", "ParamRange", "Outcome", "reason_code", "NOT_MODELLED",
            "point_program_missing"]
 
@@ -195,7 +200,8 @@ class Result:
     screened, z3 queries); ``timings`` seconds per phase.
 
     What makes a result replayable (``nczones replay``): ``program_sha256``
-    (of the program's bytes), ``machine_file``/``machine_sha256`` (the
+    (of the program's bytes; ``program_digest`` holds it, or the bytes
+    until it is first asked for), ``machine_file``/``machine_sha256`` (the
     machine file as loaded) and ``settings``, every option of
     :func:`~nczones.prover.verify` that can change the verdict, as
     JSON values (``margin``, ``engine``, ``recovery``, ``arc_tolerance``,
@@ -222,7 +228,7 @@ class Result:
     truncated: bool = False
     file: str = ""
     extra: dict = field(default_factory=dict, compare=False)
-    program_sha256: str = ""
+    program_digest: str | LaterDigest = ""
     machine_name: str = ""
     machine_file: str = ""
     machine_sha256: str = ""
@@ -234,6 +240,12 @@ class Result:
     @property
     def safe(self) -> bool:
         return self.verdict is Verdict.SAFE
+
+    @property
+    def program_sha256(self) -> str:
+        """The SHA-256 (hex) of the program's bytes (``program_digest``, computed at the first call when the
+        verify left it for later: :class:`~nczones.digest.LaterDigest`); ``""`` when not known."""
+        return str(self.program_digest)
 
     @property
     def dialect(self) -> str:

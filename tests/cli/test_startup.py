@@ -66,7 +66,9 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "signal", "threading", "select",
                           # struct (the x87 functions' packing: with ctypes), heapq (a run profile's slowest
                           # motions: once its list is full); each a C extension to load
-                          "struct", "heapq")
+                          "struct", "heapq",
+                          # issue 36 (boot43): the replay of witnesses at parameter values (none here)
+                          "nczones.pipeline.witnesses")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -100,7 +102,8 @@ def test_a_small_verify_loads_no_pathlib(tmp_path):
     import gettext
     import os
 
-    names = ("pathlib", "urllib.parse", "ipaddress", "importlib.util",
+    # contextlib (18 classes, issue 36, boot43): the run's watch is a class, the solver's query imports it
+    names = ("pathlib", "urllib.parse", "ipaddress", "importlib.util", "contextlib",
              *(() if os.path.isdir(gettext._default_localedir) else ("locale",)))
     program = tmp_path / "small.ngc"
     program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
@@ -400,3 +403,20 @@ def test_the_program_finalizes_when_its_streams_are_not_its_own():
             "sys.argv = ['nczones', '--version']\nfrom nczones.cli import run\nrun()")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
     assert r.returncode == 0 and r.stderr.split() == ["finalized"], r.stderr
+
+
+@pytest.mark.parametrize("script, raised", [("nczones", True), ("not_nczones.py", False)])
+def test_the_console_script_raises_the_threshold_before_the_imports(tmp_path, script, raised):
+    # issue 36 (boot43): the console script (a file named nczones whose __main__ imports nczones.cli) raises the
+    # collector's first threshold when nczones is imported, so the start's imports set off no collection; any
+    # other program that imports nczones keeps its own threshold
+    path = tmp_path / script
+    path.write_text("import gc, sys\ngc.set_threshold(700, 10, 10)\nbefore = gc.get_stats()[0]['collections']\n"
+                    "from nczones.cli import run\n"
+                    "print(gc.get_threshold()[0], gc.get_stats()[0]['collections'] - before)\n")
+    r = subprocess.run([sys.executable, str(path)], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    threshold, collections = map(int, r.stdout.split())
+    assert threshold == (cli.YOUNG_OBJECTS if raised else 700)
+    # raised: at most the one collection finding the package may set off; else one every few modules
+    assert collections <= 1 if raised else collections >= 5
