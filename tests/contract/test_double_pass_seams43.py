@@ -12,7 +12,7 @@ New in the mix:
   between them (plane42's ``_straight_ends``, one nextafter per step);
 * R arcs at ``r_screen``'s quick test's boundary: chords of rational length (3-4-5 directions), R half the chord
   plus 0 to 1e-3 of it, tiny chords (1e-4 mm) and huge coordinates (up to 9,000 mm, a work offset of 5,000 mm
-  written by ``G10 L2``), R of either sign;
+  written by ``G10 L20``), R of either sign;
 * compensated contours turning through every quadrant: lines along the axes and the diagonals, each turn
   left or right (a convex or a concave corner, ``corner_box``'s quadrant table), in a program the pass may
   take (G17 G21 G90).
@@ -100,7 +100,8 @@ def _r_edge(draw, st_: s41._State41, counter: str | None) -> list[str]:
     r = length / 2 + extra * max(length, Fraction(1))
     lines = []
     if huge and draw(st.booleans()):
-        lines.append(f"G10 L2 P1 {a}{_t(Fraction(draw(st.integers(-5000, 5000))))} "
+        # L20: the offset that makes here that point (translation moves both: relation 3's zones and offsets)
+        lines.append(f"G10 L20 P1 {a}{_t(Fraction(draw(st.integers(-5000, 5000))))} "
                      f"{b}{_t(Fraction(draw(st.integers(-5000, 5000))))}")
         lines.append("G54")
     lines += [f"G90 G{st_.plane} G0 {a}{_t(sx)} {b}{_t(sy)}",
@@ -112,19 +113,35 @@ def _r_edge(draw, st_: s41._State41, counter: str | None) -> list[str]:
     return lines
 
 
+#: start and end directions of an arc in a contour, both in one quadrant (or equal: a full circle):
+#: ``corner_box``'s case of a pair in one quadrant, a sweep of a few degrees or of nearly a full turn
+_ONE_QUADRANT = (((Fraction(4, 5), Fraction(3, 5)), (Fraction(3, 5), Fraction(4, 5))),
+                 ((Fraction(3, 5), Fraction(4, 5)), (Fraction(4, 5), Fraction(3, 5))),
+                 ((Fraction(-12, 13), Fraction(5, 13)), (Fraction(-4, 5), Fraction(3, 5))),
+                 ((Fraction(0), Fraction(-1)), (Fraction(0), Fraction(-1))),
+                 ((Fraction(1), Fraction(0)), (Fraction(1), Fraction(0))))
 #: turn directions of a contour: the eight compass steps, counter-clockwise from +X
 _COMPASS = ((1, 0), (1, 1), (0, 1), (-1, 1), (-1, 0), (-1, -1), (0, -1), (1, -1))
 
 
 def _corners(draw, st_: s41._State41, counter: str | None) -> list[str]:
     """A compensated contour (G17 G21 G90) of lines along the axes and diagonals, each turn 45-135 degrees left
-    or right (convex and concave corners in every quadrant)."""
+    or right (convex and concave corners in every quadrant), now and then an I/J arc whose ends lie in one
+    quadrant of its centre (a full circle, a sweep of a few degrees or of nearly a full turn)."""
     side = draw(st.sampled_from(("G41", "G42", "G41.1", "G42.1")))
     tool = {"G41.1": " D«1»", "G42.1": " D«2.5»"}.get(side, draw(st.sampled_from((" D1", " D2"))))
     x, y = (Fraction(draw(st.integers(-300, 300)), 10) for _ in range(2))
     heading = draw(st.integers(0, 7))
     lines = ["G17 G21 G90", f"G0 X{_t(x)} Y{_t(y)}"]
     for k in range(draw(st.integers(3, 9))):
+        if k and draw(st.integers(0, 3)) == 0:  # a full circle, or one whose ends lie in one quadrant
+            u0, u1 = draw(st.sampled_from(_ONE_QUADRANT))
+            r = Fraction(draw(st.integers(30, 150)), 10) * max(c.denominator for c in u0 + u1) / 5
+            cx, cy = x - r * u0[0], y - r * u0[1]
+            x, y = cx + r * u1[0], cy + r * u1[1]
+            code = draw(st.sampled_from(("G2", "G3")))
+            lines.append(f"{code} X{_t(x)} Y{_t(y)} I{_t(-r * u0[0])} J{_t(-r * u0[1])}")
+            continue
         length = Fraction(draw(st.integers(30, 200)), 10)
         dx, dy = _COMPASS[heading]
         x, y = x + length * dx, y + length * dy
@@ -235,3 +252,26 @@ def test_seams43_long(data):
 @given(st.data())
 def test_rs274_seams43_long(tmp_path_factory, data):
     check_rs274_any(data, tmp_path_factory.mktemp("rs274"))
+
+
+#: compensated arcs whose ends lie in one quadrant of the centre: a sweep of nearly a full turn (G2 from (4, 3)
+#: to (3, 4) about the origin) or of a few degrees; the pass takes them (``corner_box``'s pair in one quadrant)
+ONE_QUADRANT_ARCS = (
+    "G17 G21 G90 F200\nG0 X0 Y-10\nG41 D1 G1 X4 Y3\nG2 X3 Y4 I-4 J-3\nG1 X3 Y10\nG40 G0 X30 Y20\nM2\n",
+    "G17 G21 G90 F200\nG0 X0 Y-10\nG42 D1 G1 X4 Y3\nG2 X3 Y4 I-4 J-3\nG1 X3 Y10\nG40 G0 X30 Y20\nM2\n",
+    "G17 G21 G90 F200\nG0 X0 Y20\nG41 D1 G1 X3 Y4\nG3 X4 Y3 I-3 J-4\nG1 X10 Y3\nG40 G0 X30 Y20\nM2\n",
+    "G17 G21 G90 F200\nG0 X10 Y20\nG41 D1 G1 X40 Y30\nG2 X30 Y40 I-40 J-30\nG1 X30 Y100\nG40 G0 X30 Y200\nM2\n",
+)
+
+
+@pytest.mark.parametrize("text", ONE_QUADRANT_ARCS)
+def test_a_compensated_arc_with_both_ends_in_one_quadrant_is_boxed_whole(text):
+    """Relation 2 on :data:`ONE_QUADRANT_ARCS` (each taken by the pass): every point of the full path's arcs in
+    the pass's boxes.  ``corner_box`` without its "all four directions unless the end is clearly ahead" fails
+    three of them (hunt43's teeth)."""
+    from nczones.machine import parse_machine
+    from tests.gcode.test_double_pass import check_against_full
+    from tests.machines import machine_text
+
+    machine = parse_machine(machine_text("xyz_range_seams", set={"machine.cutter_compensation": "linuxcnc"}))
+    assert check_against_full(text, machine, 200) is not None, "the pass declined"
