@@ -33,6 +33,7 @@ import pytest
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
+from tests.contract import test_double_pass_seams40 as s40
 from tests.contract import test_double_pass_seams41 as s41
 from tests.contract import test_double_pass_seams42 as s42
 from tests.contract.test_double_pass_seams40 import (
@@ -213,7 +214,25 @@ def check_any(data, units: str | None = None) -> None:
     if comp:
         modal = [g for g in values.get("machine.modal", ()) if g not in ("G20", "G91")]
         values = {**values, "machine.cutter_compensation": "linuxcnc", "machine.modal": modal}
-    event(check_seams(template, "xyz_range_seams", values, draw, units))
+    seen: list[str] = []
+    inner = s40._run
+
+    def run(*args, **kwargs):
+        got = inner(*args, **kwargs)
+        seen.extend(r.message for r in getattr(got, "reasons", ()) if "time backstop" in r.message)
+        return got
+
+    s40._run = run
+    try:
+        event(check_seams(template, "xyz_range_seams", values, draw, units))
+    except AssertionError as exc:
+        # relations 1 and 3 compare verdicts: a solver stopped by its wall-clock backstop (hunt43's H2: a face
+        # within 1e-30 mm of an R arc's irrational extreme, on a loaded machine) is counted, not failed
+        if not seen or not str(exc).startswith(("relation 1", "relation 3")):
+            raise
+        event("a verdict left unknown by the solver's time backstop (counted)")
+    finally:
+        s40._run = inner
 
 
 def check_rs274_any(data, workdir) -> None:
