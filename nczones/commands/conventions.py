@@ -28,12 +28,15 @@ from ..errors import Diagnostic, InputError, InvalidArgument, NczonesError
 # typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
 TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from typing import TextIO
+
     from ..gcode.source import ProgramSource
     from ..machine import Machine
 
 __all__ = ["EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL", "EXIT_INTERRUPTED",
            "EXIT_TERMINATED", "EXTRAS", "usage_error", "add_dialect_arguments", "with_dialect", "library_folder",
-           "program_source", "arc_tolerance", "budget_seconds", "missing_extra", "report_failure"]
+           "program_source", "arc_tolerance", "budget_seconds", "missing_extra", "report_failure",
+           "standard_output"]
 
 EXIT_OK = 0
 EXIT_FAIL = 1
@@ -171,6 +174,18 @@ def report_failure(exc: BaseException, command: str = "") -> int:
     traceback.print_exception(exc)
     print("nczones: internal error (the traceback above is a bug in nczones; please report it)", file=sys.stderr)
     return EXIT_INTERNAL
+
+
+def standard_output() -> TextIO:
+    """``sys.stdout``, or an :class:`OSError` when standard output is closed (Python sets ``sys.stdout`` to None
+    when the process starts without file descriptor 1): :func:`report_failure` tells it as a user's error, as a
+    full disk or a broken pipe, not as a bug (hunt43's F1)."""
+    stream = sys.stdout
+    if stream is None:
+        import errno
+
+        raise OSError(errno.EBADF, "standard output is closed")
+    return stream
 
 
 def _quiet_stdout(exc: OSError) -> None:

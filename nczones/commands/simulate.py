@@ -27,6 +27,7 @@ from .conventions import (
     budget_seconds,
     library_folder,
     program_source,
+    standard_output,
     with_dialect,
 )
 
@@ -176,10 +177,10 @@ def _run(args: argparse.Namespace) -> int:
         data["notes"] = list(data["notes"]) + notes
         if not args.events:
             data.pop("events")
-        sys.stdout.write(json.dumps(data, indent=2) + "\n")
+        standard_output().write(json.dumps(data, indent=2) + "\n")
     else:
         text = render_text(result, source.name)
-        sys.stdout.write(text + f"  dialect: {machine.dialect}\n" + "".join(f"  note: {n}\n" for n in notes))
+        standard_output().write(text + f"  dialect: {machine.dialect}\n" + "".join(f"  note: {n}\n" for n in notes))
     if result.alarms:
         return EXIT_FAIL
     if budget_stop or any("not supported" in n for n in notes):

@@ -35,6 +35,7 @@ from .conventions import (
     EXIT_UNKNOWN,
     add_dialect_arguments,
     program_source,
+    standard_output,
     usage_error,
     with_dialect,
 )
@@ -127,7 +128,7 @@ def check_output_path(path: str | None) -> None:
 def write_output(path: str | None, text: str) -> None:
     """Write ``text`` to ``path`` (standard output when None); an OS error is ``VF107``, one line."""
     if path is None:
-        sys.stdout.write(text)
+        standard_output().write(text)
         return
     try:
         with open(path, "w", encoding="utf-8") as fh:
