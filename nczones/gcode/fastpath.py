@@ -295,8 +295,10 @@ def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -
             number = _last_word(code, lo, hi, ord("N"))
             if number is not None:
                 last["N"] = number
-            if alone != last.get("N"):  # the last N is a line's alone (FanucRunner.number_alone)
+            if alone != number:  # the last N is a line's alone (FanucRunner.number_alone)
                 last["N*"] = (alone, last.get("N"))
+            else:  # a block's: it settles an alone before it
+                last.pop("N*", None)
 
 
 def _last_word(code: tuple[np.ndarray, np.ndarray], lo: int, hi: int, letter: int,

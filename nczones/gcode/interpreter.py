@@ -947,7 +947,7 @@ class Interpreter:
     #: Whether the program may read the N of the last block (a Fanuc macro's #4114, kept in ``last["N"]``):
     #: the plain-move lane then keeps it too
     keeps_number = False
-    last: dict[str, Fraction]  # (the Fanuc interpreter's: the last D F H M N words read)
+    last: dict[str, Any]  # (the Fanuc interpreter's: the last D F H M N words read, "N*": FanucRunner.number_alone)
 
     def run(self, blocks: Iterable[Block]) -> Iterator[MotionChunk]:
         """Interpret blocks in execution order, yielding motion chunks.
@@ -974,7 +974,7 @@ class Interpreter:
                     if block.index == self._declined or not self._plain(block.letters, block.values):
                         self._execute_general(block)
                     elif self.keeps_number and block.number is not None:
-                        self.last["N"] = block.number  # (_execute_general's _record_block keeps it)
+                        self.keep_number(block.number)  # (_execute_general's _record_block keeps it)
                 else:
                     self.execute(block)
             except StopProgram:
@@ -993,9 +993,17 @@ class Interpreter:
             self.m73_returns()
         if type(block) is PlainBlock and self._plain(block.letters, block.values):
             if self.keeps_number and block.number is not None:
-                self.last["N"] = block.number  # (_execute_general's _record_block keeps it)
+                self.keep_number(block.number)  # (_execute_general's _record_block keeps it)
             return
         self._execute_general(block)
+
+    def keep_number(self, number: Fraction) -> None:
+        """The N of a block with an NC word, for a macro's read of the last sequence number (a Fanuc ``#4114``):
+        it settles what an earlier line of its N alone left (``last["N*"]``, ``FanucRunner.number_alone``)."""
+        last = self.last
+        last["N"] = number
+        if "N*" in last:
+            del last["N*"]
 
     def _split_words(
         self, block: Block

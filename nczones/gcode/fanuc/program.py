@@ -962,6 +962,7 @@ class FanucRunner:
         last = getattr(self.state, "last", None)
         if last is not None:
             last["N"] = number
+            last.pop("N*", None)  # a block's N settles a line's alone (number_alone)
 
     def read_plain(self, frame: _Frame, pos: int, lineno: int, may_keep: bool) -> tuple | None:
         """The line at ``pos`` (not run before as a compiled line) for run(): ``(line, next offset, its

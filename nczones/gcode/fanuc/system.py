@@ -162,7 +162,7 @@ def _alone(it: MacroState, n: int, last: Fraction | None) -> None:
     """Unknown when ``#n`` (the last N) differs as a line with an N and no NC word counts or not: such a line
     (``N25`` alone, a macro statement's label) is no block for this reader, and whether the control's last
     sequence number then holds its N is not settled (``FanucRunner.number_alone`` keeps ``last["N*"]``: its N and
-    the block's N then; a later block changes the latter, and the two readings agree again)."""
+    the block's N then; a later block's N settles it, ``Interpreter.keep_number`` drops the entry)."""
     alone = it.last.get("N*")
     if alone is not None and alone[1] == last and alone[0] != last:
         raise _unknown(n, f"#{n} after N{alone[0]} on a line without an NC word (a sequence number alone or a "

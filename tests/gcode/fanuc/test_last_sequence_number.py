@@ -180,8 +180,12 @@ ALONE = {
     "an N alone with a comment": ("N10 G01 X1. Y1.\nN25 (NEXT)\n", None),
     "an N alone, the first N": ("G01 X1. Y1.\nN25\n", None),
     "an N alone, then a numbered block": ("N10 G01 X1. Y1.\nN25\nN30 G01 X2. Y1.\n", 30),
+    "an N alone, then a block of the N before": ("N10 G01 X1. Y1.\nN25\nN10 G01 X2. Y1.\n", 10),
     "an N alone with the same number": ("N25 G01 X1. Y1.\nN25\n", 25),
     "an N alone in a loop": ("#2 = 0\nWHILE [#2 LT 3] DO1\nN30 G01 X2. Y1.\nN35\n#2 = #2 + 1\nEND1\n", None),
+    # in a canned cycle's mode the reader hands the line on as a block without words (FanucInterpreter's
+    # _record_block keeps its N apart)
+    "an N alone in a canned cycle's mode": ("G00 Z1.\nG98 G81 X0. Y0. Z-3. R2.\nX1.\nN35\nG80\n", None),
     "a macro statement's label": ("N10 G01 X1. Y1.\nN25 #1 = 2\n", None),
     "a label, then a numbered block": ("N10 G01 X1. Y1.\nN25 #1 = 2\nN30 G01 X2. Y1.\n", 30),
     # the third pass runs N100 and N300 as kept closures (FanucRunner.make_op) after a block (N250) the passes
@@ -217,3 +221,20 @@ def test_a_vectorized_run_with_an_n_alone(fast, alone):
     body = "".join(f"N{k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 1201))
     text = HEAD + "#1 = 0\n" + (body + "N1500\n" if alone else "N1500\n" + body) + TAIL
     assert _alone_read(text, fast) == (None if alone else 1200)
+
+
+def test_a_block_without_words_keeps_its_n_apart():
+    """A line of its N alone that the reader hands on as a block (no words) leaves ``#4114`` as the two readings
+    allow, not as a block's N; a block's N (``keep_number``) then settles it."""
+    from nczones.errors import SourceSpan
+    from nczones.gcode.blocks import Block
+    from nczones.gcode.fanuc.expr import SystemVariableUnknown
+    from nczones.gcode.fanuc.interpreter import FanucInterpreter
+    from nczones.gcode.fanuc.system import read
+
+    it = FanucInterpreter(mill())
+    it.execute(Block(words=(), span=SourceSpan("t.nc", 1, 1, 4, "N35"), index=0, number=Fraction(35)))
+    with pytest.raises(SystemVariableUnknown, match="not settled"):
+        read(it, 4114)
+    it.keep_number(Fraction(40))
+    assert read(it, 4114)[0] == 40
