@@ -248,10 +248,22 @@ def _small_plain(text: str | FileText) -> bool:
     lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
     if lines < FAST_PATH_MIN_LINES or lines > PLAIN_PASS_SIZE:
         return False
-    r_arcs = text.count("R") + text.count("r")
+    r_arcs = _letter_count(text, "R")
     # (G18's centre words are K and I, G19's J and K: the larger count, each arc once)
-    ij_arcs = max(text.count("J") + text.count("j"), text.count("K") + text.count("k"))
+    ij_arcs = max(_letter_count(text, "J"), _letter_count(text, "K"))
     return lines + PLAIN_PASS_R_ARC * r_arcs + PLAIN_PASS_ARC * ij_arcs <= PLAIN_PASS_SIZE
+
+
+def _letter_count(text: str | FileText, letter: str) -> int:
+    r"""How many times ``letter`` is in ``text``, in either case: the lower case counted only when the text holds
+    it (``in`` finds a character with ``memchr``, some 30x quicker than ``count``'s scan, and CAM output is upper
+    case: line44, some 1.4M instructions a count on 10,000 R arcs).
+
+    >>> _letter_count("G2 X1 R2\nG3 X0 r1", "R"), _letter_count("G1 X1", "J")
+    (2, 0)
+    """
+    small = letter.lower()
+    return text.count(letter) + (text.count(small) if small in text else 0)
 
 
 def _double_pass_first(source: ProgramSource, machine: Machine, options: VerifyOptions, tolerance: Fraction | str,
@@ -308,31 +320,52 @@ FANUC_BOX_LINES = 40_000
 
 
 @functools.cache
-def _fanuc_call() -> Any:
-    """A Fanuc subprogram or macro call (M98, G65, G66): its loops may run far more lines than the text holds."""
+def _fanuc_codes() -> Any:
+    """The codes that keep a plain Fanuc program off the box route, one pattern per case of its letter: a call
+    (M98, G65, G66: its loops may run far more lines than the text holds), a G68 rotation or a G51 scaling, and the
+    codes under which the box route's reader leaves their lines to the general path (G20 inch input, G91
+    incremental input: ``boxrun._read_transformed``) while the vectorized fast path takes them (a 10,000-line G20
+    program under G68: 3.3 s on the route against 0.25 s).
+
+    ``(G, g, M, m)``: each pattern starts with its letter, which the regex engine scans for (a class at the start
+    is tested at every character: some 8x slower, issue 36); a G match's group 1 is a G65/G66 call, its group 2
+    the code of the others.  Searched in the text as written, the lower-case letter's pattern only when the text
+    holds that letter (line44: no ``upper()`` of the text, one scan for the G codes instead of three; 11.7M -> 2.5M
+    instructions on 10,000 R arcs).  The answer is the upper-cased text's: only the letter of each pattern has a
+    case, no character but ``g`` (``m``) upper-cases to a string holding a ``G`` (``M``), a digit, a point, a space
+    or a tab, and a character's upper case starts with a digit or a point exactly when it is one
+    (``tests/pipeline/test_fanuc_codes.py`` checks every code point, and the old scan against this one)."""
     import re
 
-    # two patterns that start with a letter, searched in the upper-cased text: a literal first character is found
-    # by a fast scan (one pattern with "[mM]...|[gG]..." tests every character: 8x slower, issue 36)
-    return re.compile(r"M[ \t]*0*98(?![\d.])"), re.compile(r"G[ \t]*0*6[56](?![\d])")
+    g = r"[ \t]*0*(?:(6[56])(?!\d)|(68|51|20|91)(?![\d.]))"
+    m = r"[ \t]*0*98(?![\d.])"
+    return re.compile("G" + g), re.compile("g" + g), re.compile("M" + m), re.compile("m" + m)
 
 
-@functools.cache
-def _fanuc_transforms() -> Any:
-    """A G68 rotation or a G51 scaling, and the codes under which the box route's reader leaves their lines to the
-    general path (G20 inch input, G91 incremental input: ``boxrun._read_transformed``) while the vectorized fast
-    path takes them (a 10,000-line G20 program under G68: 3.3 s on the route against 0.25 s)."""
-    import re
+def _fanuc_plain_piece(p: str) -> bool:
+    r"""Has ``p`` no Fanuc call (M98, G65, G66), and no G68 or G51 with a G20 or G91 (:func:`_fanuc_codes`)?
 
-    return re.compile(r"G[ \t]*0*(?:68|51)(?![\d.])"), re.compile(r"G[ \t]*0*20(?![\d.])"), \
-        re.compile(r"G[ \t]*0*91(?![\d.])")
+    >>> _fanuc_plain_piece("G1 X1.\ng02 X2. R1."), _fanuc_plain_piece("m 098 P2"), _fanuc_plain_piece("g68\nG091")
+    (True, False, False)
+    """
+    big_g, small_g, big_m, small_m = _fanuc_codes()
+    if big_m.search(p) is not None or ("m" in p and small_m.search(p) is not None):
+        return False
+    codes = set()
+    # (a match spans one G and no other: every G that starts a code is met)
+    for pattern in (big_g, small_g) if "g" in p else (big_g,):
+        for found in pattern.finditer(p):
+            if found.group(1) is not None:
+                return False
+            codes.add(found.group(2))
+    return not (codes & {"68", "51"} and codes & {"20", "91"})
 
 
 def _fanuc_boxes_first(text: str | FileText) -> bool:
     r"""Whether a Fanuc program tries the box route first: fewer than :data:`FAST_PATH_MIN_LINES` lines (any
     program), or a plain one of up to :data:`FANUC_BOX_LINES` (its runs of plain lines, of hole lines and of plain
     lines under one G68 rotation or G51 scaling are read into boxes from the text: ``fanuc.boxrun``) but one with
-    G68 or G51 and G20 or G91 (:func:`_fanuc_transforms`: the fast path's).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
+    G68 or G51 and G20 or G91 (:func:`_fanuc_codes`: the fast path's).  Soundness does not rest on this test: the route proves or declines (then today's path decides as
     if it had not run).
 
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * 600), _fanuc_boxes_first("M98 P10\n" + "G1 X1. F100.\n" * 600)
@@ -343,28 +376,22 @@ def _fanuc_boxes_first(text: str | FileText) -> bool:
     (True, True)
     >>> _fanuc_boxes_first("G20\nG68 X0 Y0 R30.\n" + "X1.\n" * 600), _fanuc_boxes_first("G51 P2.\nG91\n" + "X1.\n" * 600)
     (False, False)
+    >>> _fanuc_boxes_first("g020\ng68 X0 Y0 R30.\n" + "X1.\n" * 600), _fanuc_boxes_first("m098 p10\n" + "X1.\n" * 600)
+    (False, False)
     >>> _fanuc_boxes_first("G1 X1. F100.\n" * (FANUC_BOX_LINES + 1))
     False
     """
+    global _BOXES_FIRST
+    last = _BOXES_FIRST
+    if last[0] is text:  # the same text asked again (the cases' loop, then the route): not even counted again
+        return bool(last[1])
     lines = _line_count(text)  # type: ignore[arg-type]  # FileText counts too
     if lines < FAST_PATH_MIN_LINES:
         return True
     if lines > FANUC_BOX_LINES or len(text) > FANUC_BOX_LINES * 128 or "#" in text:
         return False
-    global _BOXES_FIRST
-    last = _BOXES_FIRST
-    if last[0] is text:  # the same text asked again (the cases' loop, then the route)
-        return bool(last[1])
     pieces = text.pieces(1 << 20) if isinstance(text, FileText) else (text,)
-    m98, g65 = _fanuc_call()
-    turns, inch, incremental = _fanuc_transforms()
-    got = True
-    for p in pieces:
-        up = p.upper()
-        if m98.search(up) is not None or g65.search(up) is not None or (
-                turns.search(up) is not None and (inch.search(up) is not None or incremental.search(up) is not None)):
-            got = False
-            break
+    got = all(_fanuc_plain_piece(p) for p in pieces)
     _BOXES_FIRST = (text, got)  # one tuple: a thread reads a text and its own answer
     return got
 
