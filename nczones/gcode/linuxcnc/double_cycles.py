@@ -189,8 +189,9 @@ def may_cycle(text: Any) -> bool:
     """
     if not isinstance(text, str):
         return "73" in text or "8" in text
-    # "G" and "g" apart: a letter the regex engine scans for, not a class tested at every character (_may_compensate)
-    return any(re.search(g + r"[ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None for g in "Gg")
+    # "G" and "g" apart: a letter the regex engine scans for, not a class tested at every character (_may_compensate);
+    # "g" only in a text that holds one (``in`` finds it with memchr: CAM output is upper case, line44)
+    return any(re.search(g + r"[ \t]*0*(?:73|8[1-9])(?![0-9])", text) is not None for g in "Gg" if g in text)
 
 
 def _literal(tree: Any, leaf: Any) -> str:

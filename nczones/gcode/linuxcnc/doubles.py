@@ -707,9 +707,10 @@ class _Pass:
     def _straight(self, i: int, end: int) -> int:
         """Run lines ``i``..``end - 1``, read once (not in a loop or call): the next line, or -1 when the
         program ended.  A line whose layout has a step (``by_layout``) runs it on the literals its layout's
-        cutter takes out of it; a line of a layout without one yet is stepped (:meth:`_step`) where it stands,
+        cutter takes out of it; a line of a layout without one yet is stepped (:meth:`_line_step`) where it stands,
         in the same walk of its piece (arc43: not a new slice of the rest of the piece at each new layout, some
-        2k instructions a line on CAM output with arcs)."""
+        2k instructions a line on CAM output with arcs).  The walk pairs the lines with their layouts (line44: no
+        index a line, an ``int`` made past 256, and no ``lines[k]``; the whole piece not copied)."""
         src, by_layout = self.src, self.by_layout
         while i < end:
             lo, hi, lines, layouts = src.piece(i)
@@ -718,18 +719,20 @@ class _Pass:
                 last: bytes | None = None  # the last layout run, and its step (CAM lines often repeat a layout)
                 step: Any = None
                 cut: Any = None
-                for k, layout in enumerate(layouts[first:stop], first):
+                pairs = zip(lines, layouts) if first == 0 and stop == len(lines) \
+                    else zip(lines[first:stop], layouts[first:stop])
+                for line, layout in pairs:
                     if layout != last:
                         got = by_layout.get(layout)
                         if got is None:  # (its step is compiled now: the next line of its layout finds it)
                             last = None
-                            fn, parts = self._step(k + lo)
+                            fn, parts = self._line_step(line, layout)
                             if fn is not None and fn(parts):
                                 return -1
                             continue
                         step, cut = got
                         last = layout
-                    if step(cut(lines[k])):
+                    if step(cut(line)):
                         return -1
                 i = stop + lo
                 continue
@@ -810,7 +813,10 @@ class _Pass:
 
     def _step(self, i: int) -> tuple[Any, tuple]:
         """``(step, its literals)`` of line ``i`` (``step`` None: nothing to do)."""
-        line, own_layout = self.src.line(i)
+        return self._line_step(*self.src.line(i))
+
+    def _line_step(self, line: str, own_layout: bytes | None) -> tuple[Any, tuple]:
+        """``(step, its literals)`` of the text of a line and its layout (None: its piece is not ASCII)."""
         if "(" in line or ";" in line or not line.isascii():
             return self._parsed(line), ()
         layout = line.encode().translate(LAYOUT)
@@ -1824,7 +1830,7 @@ def _may_compensate(text: Any) -> bool:
         return "41" in text or "42" in text
     # "G" and "g" searched apart: a pattern that starts with a letter is scanned for it (the regex engine's
     # literal prefix), one that starts with a class tests the class at every character (some 8x the work)
-    return any(re.search(g + r"[ \t]*0*4[12](?![0-9])", text) is not None for g in "Gg")
+    return any(re.search(g + r"[ \t]*0*4[12](?![0-9])", text) is not None for g in "Gg" if g in text)
 
 
 def _g64_q(groups: dict[str, int], others: list[str], axes: bool) -> bool:
