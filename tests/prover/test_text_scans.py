@@ -69,3 +69,40 @@ def test_the_fanuc_scan_on_codes_of_every_kind():
         assert not _old_plain_piece(text), text
     for text in ("G68\nG21", "g51\ng90", "G0 X65. Y98.", "G65.1", "M198"):
         assert _fanuc_plain_piece(text) == _old_plain_piece(text), text
+
+
+_TEXT = st.text(alphabet=st.sampled_from(list("Gg0123456789.7381 \tXxRrJjKkN\n") + ["é", "ß", "\r"]), max_size=40)
+
+
+@settings(max_examples=300, deadline=None)
+@given(_TEXT)
+def test_the_box_reader_s_lines_are_the_str_ones(text):
+    """``boxrun._keys_dotless`` (bytes for an ASCII text) gives the lines ``str.translate`` and ``str.replace``
+    gave."""
+    from nczones.gcode.fanuc.boxrun import _ZERO_DIGITS, _keys_dotless
+
+    assert _keys_dotless(text) == (text.translate(_ZERO_DIGITS).split("\n"), text.replace(".", "").split("\n"))
+
+
+@settings(max_examples=300, deadline=None)
+@given(_TEXT)
+def test_the_letter_counts_and_the_g_scans_are_the_old_ones(text):
+    """``_letter_count`` is both cases' ``count``; ``may_cycle`` and ``_may_compensate`` search "g" only in a text
+    that holds one: the answer of both letters' searches."""
+    from nczones.gcode.linuxcnc.double_cycles import may_cycle
+    from nczones.gcode.linuxcnc.doubles import _may_compensate
+    from nczones.pipeline.verification import _letter_count
+
+    for letter in "RJK":
+        assert _letter_count(text, letter) == text.count(letter) + text.count(letter.lower())
+    assert may_cycle(text) == any(re.search(g + r"[ \t]*0*(?:73|8[1-9])(?![0-9])", text) for g in "Gg")
+    assert _may_compensate(text) == any(re.search(g + r"[ \t]*0*4[12](?![0-9])", text) for g in "Gg")
+
+
+def test_lower_case_codes_are_still_found():
+    """A text in lower case (the g scan is the one that finds them; a mutant that drops it fails here)."""
+    from nczones.gcode.linuxcnc.double_cycles import may_cycle
+    from nczones.gcode.linuxcnc.doubles import _may_compensate
+
+    assert may_cycle("g0 z2\ng98 g 081 x1 r2") and not may_cycle("g0 x81 y73")
+    assert _may_compensate("g1 x1\ng041 d1") and not _may_compensate("g1 x41 y42")
