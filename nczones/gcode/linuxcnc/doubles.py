@@ -1480,13 +1480,15 @@ class _Pass:
             if groups["motion"] != 1 or any(x in "IJKR" for x in others):
                 raise Declined("an arc without axis words")
             body.append("if not st.feed > 0.0: raise D('G1 without a positive feed')")
-        if axes or groups.get("motion") in CYCLE_CODES:  # a cycle block runs without axis words too
-            body += cycle_call(others, axes)
+        # a cycle block runs without axis words too
+        calls = cycle_call(others, axes) if axes or groups.get("motion") in CYCLE_CODES else []
         if axes:
             code = groups.get("motion")
-            body += self._motion_body(others, axes, code if code in (0, 1, 2, 3) else None)
+            body += _cycle_in_mode(calls, self._motion_body(others, axes, code if code in (0, 1, 2, 3) else None))
         elif any(x in "IJKR" for x in others) and groups.get("motion") not in CYCLE_CODES:
             raise Declined("I, J, K or R without a motion")
+        else:
+            body += calls
         return self._compiled_plan(body)
 
     def _compiled_plan(self, body: list[str]) -> Any:
@@ -1860,6 +1862,35 @@ def _mode_checks(code: int | None, arc: bool) -> list[str]:
     if code == 1:
         return body + [_STRAIGHT_MODE[1].strip()]
     return body + (["raise D('an arc without I, J, K or R')"] if code else [])
+
+
+def _cycle_in_mode(calls: list[str], motion: list[str]) -> list[str]:
+    """``calls + motion`` (a block's cycle call, :func:`~.double_cycles.cycle_call`, and its motion), but for a modal
+    straight move (the CAM line ``X.. Y..``) the same code with the cycle's call tested only where the mode is
+    neither G1 nor G0: ``mode = st.motion``, then ``if mode == 1`` (the feed's test), ``elif mode`` (the cycle's call,
+    else the decline of an arc without its words), ``elif mode is None`` (the decline of axis words without a mode).
+    Every mode has the same outcome as before: 0 and 1 are no cycle's, None is in no set of ints, and the call was
+    the line just before ``mode = st.motion`` (line44: a set lookup and some 7 bytecodes a line;
+    ``tests/gcode/test_double_pass_cycle_fold.py`` runs both for every mode).
+
+    >>> calls = ["if st.motion in CYC: return CY(((0, v[0]), ), None, None, None, None, None)"]
+    >>> print("\\n".join(_cycle_in_mode(calls, _mode_checks(None, False) + ["off = st.off"])))
+    mode = st.motion
+    if mode == 1:
+        if not st.feed > 0.0: raise D('G1 without a positive feed')
+    elif mode:
+        if mode in CYC: return CY(((0, v[0]), ), None, None, None, None, None)
+        raise D('an arc without I, J, K or R')
+    elif mode is None: raise D('axis words without a motion mode')
+    off = st.off
+    """
+    head = _mode_checks(None, False)
+    if len(calls) != 1 or not calls[0].startswith("if st.motion in CYC: return CY(") or motion[:len(head)] != head:
+        return calls + motion
+    call = calls[0].replace("if st.motion in CYC:", "if mode in CYC:", 1)
+    return ["mode = st.motion", _STRAIGHT_MODE[0], _STRAIGHT_MODE[1], "elif mode:", f"    {call}",
+            "    raise D('an arc without I, J, K or R')", "elif mode is None: raise D('axis words without a motion mode')",
+            *motion[len(head):]]
 
 
 def _groups(gs: list[int]) -> dict[str, int]:

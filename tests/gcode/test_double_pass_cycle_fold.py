@@ -1,0 +1,46 @@
+"""``doubles._cycle_in_mode`` (line44): a modal straight move's cycle call folded into its mode's tests.  The folded
+code and the code it replaces (the call, then the tests) have the same outcome for every motion mode and feed:
+the same return, the same decline, or on to the move."""
+
+from __future__ import annotations
+
+import pytest
+
+from nczones.gcode.linuxcnc.double_cycles import CYCLE_CODES, cycle_call
+from nczones.gcode.linuxcnc.doubles import Declined, _cycle_in_mode, _mode_checks
+
+
+class _State:
+    def __init__(self, motion, feed):
+        self.motion, self.feed = motion, feed
+
+
+def _run(body, motion, feed):
+    """``body`` as a plan's, then "moved": its outcome."""
+    src = "def plan(v):\n" + "".join(f"    {b}\n" for b in body) + "    return 'moved'\n"
+    scope = {"st": _State(motion, feed), "D": Declined, "CYC": CYCLE_CODES, "CY": lambda *args: ("cycle", args)}
+    exec(src, scope)  # noqa: S102 - the test's own code
+    try:
+        return scope["plan"]((1.5, -2.0))
+    except Declined as exc:
+        return ("declined", str(exc))
+
+
+@pytest.mark.parametrize("motion", [None, 0, 1, 2, 3, 33, *sorted(CYCLE_CODES)])
+@pytest.mark.parametrize("feed", [0.0, -1.0, 800.0])
+def test_the_fold_has_the_outcome_of_the_call_then_the_tests(motion, feed):
+    calls = cycle_call(["X", "Y"], [(0, 0), (1, 1)])
+    motion_body = _mode_checks(None, False) + ["off = 1"]
+    folded = _cycle_in_mode(calls, motion_body)
+    assert folded != calls + motion_body  # (folded: the modal X Y line)
+    assert _run(folded, motion, feed) == _run(calls + motion_body, motion, feed)
+
+
+def test_no_fold_where_the_call_is_not_alone_or_the_move_not_modal():
+    """A call with a P's decline after it, or a move with its own code: the code as it was."""
+    calls = cycle_call(["X", "P"], [(0, 0)])
+    motion_body = _mode_checks(None, False)
+    assert _cycle_in_mode(calls, motion_body) == calls + motion_body
+    calls = cycle_call(["X"], [(0, 0)])
+    motion_body = _mode_checks(1, False)
+    assert _cycle_in_mode(calls, motion_body) == calls + motion_body
