@@ -611,9 +611,9 @@ class _Pass:
         self.plain_steps: dict[str, Any] = {}  # a plain line's letters -> its step (_plain)
         self.plain_kinds: dict[bytes, Any] = {}  # a plain layout, its digit runs made one -> its step (_plain)
         self.pindex: dict[str, int] = {}
-        from .state import linuxcnc_state_parameters
+        from .state import linuxcnc_state_numbers
 
-        self.state_keys = frozenset(k for k in linuxcnc_state_parameters() if isinstance(k, int)) | {3000, 3006}
+        self.state_keys = linuxcnc_state_numbers() | {3000, 3006}
         self.env = {"S": self.S, "N": self.N, "D": Declined, "binary_op": binary_op, "unary_op": unary_op,
                     "_atan": _atan, "_code": _code, "_sin": TRIG_DEGREES["sin"],
                     "_cos": TRIG_DEGREES["cos"], "_tan": TRIG_DEGREES["tan"], "_pindex": self._pindex, "I": self.pindex}
@@ -1871,7 +1871,7 @@ def _cycle_in_mode(calls: list[str], motion: list[str]) -> list[str]:
     else the decline of an arc without its words), ``elif mode is None`` (the decline of axis words without a mode).
     Every mode has the same outcome as before: 0 and 1 are no cycle's, None is in no set of ints, and the call was
     the line just before ``mode = st.motion`` (line44: a set lookup and some 7 bytecodes a line;
-    ``tests/gcode/test_double_pass_cycle_fold.py`` runs both for every mode).
+    ``tests/gcode/test_double_pass_line_cost.py`` runs both for every mode).
 
     >>> calls = ["if st.motion in CYC: return CY(((0, v[0]), ), None, None, None, None, None)"]
     >>> print("\\n".join(_cycle_in_mode(calls, _mode_checks(None, False) + ["off = st.off"])))

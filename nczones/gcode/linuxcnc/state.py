@@ -79,6 +79,7 @@ __all__ = [
     "StateParameter",
     "StateTable",
     "linuxcnc_state_parameters",
+    "linuxcnc_state_numbers",
     "DEBUG_FLAG",
     "DEBUG_FLAG_DEFAULT",
     "AXIS_LETTERS",
@@ -272,6 +273,24 @@ def _tool_diameter(it: StateSource) -> Reading:
         return None
     sv = _machine_len(it, StateValue(d))
     return None if sv is None else sv.value
+
+
+def linuxcnc_state_numbers() -> frozenset[int]:
+    """The numbered keys of :func:`linuxcnc_state_parameters`, without making its 230 readers (the double pass's
+    test of a parameter read, once a pass: line44, some 1.4M instructions).  ``tests/gcode/test_double_pass_line_cost.py``
+    holds it to the table's keys.
+
+    >>> 5221 in linuxcnc_state_numbers(), 5599 in linuxcnc_state_numbers(), len(linuxcnc_state_numbers())
+    (True, False, 173)
+    """
+    k = len(AXIS_LETTERS)
+    numbers = {5070, 5210, 5220, 5399, 5400, 5410, 5411, 5412, 5413, 5600, 5601}
+    for first in (5021, 5061, 5081, 5161, 5181, 5211, 5401, 5420):
+        numbers.update(range(first, first + k))
+    for n in range(len(WORK_OFFSET_NAMES)):
+        numbers.update(range(5221 + 20 * n, 5221 + 20 * n + k))
+        numbers.add(5230 + 20 * n)
+    return frozenset(numbers)
 
 
 def linuxcnc_state_parameters() -> StateTable:

@@ -1,6 +1,10 @@
-"""``doubles._cycle_in_mode`` (line44): a modal straight move's cycle call folded into its mode's tests.  The folded
-code and the code it replaces (the call, then the tests) have the same outcome for every motion mode and feed:
-the same return, the same decline, or on to the move."""
+"""What the double pass does once a line or once a pass, made cheaper (line44, issue 36), against what it replaces.
+
+- ``doubles._cycle_in_mode``: a modal straight move's cycle call folded into its mode's tests.  The folded code
+  and the code it replaces (the call, then the tests) have the same outcome for every motion mode and feed: the
+  same return, the same decline, or on to the move.
+- ``state.linuxcnc_state_numbers``: the state parameters' numbers (the pass declines a read of one) without the
+  table's readers: the table's numbered keys."""
 
 from __future__ import annotations
 
@@ -44,3 +48,9 @@ def test_no_fold_where_the_call_is_not_alone_or_the_move_not_modal():
     calls = cycle_call(["X"], [(0, 0)])
     motion_body = _mode_checks(1, False)
     assert _cycle_in_mode(calls, motion_body) == calls + motion_body
+
+
+def test_the_state_numbers_are_the_table_s():
+    from nczones.gcode.linuxcnc.state import linuxcnc_state_numbers, linuxcnc_state_parameters
+
+    assert linuxcnc_state_numbers() == frozenset(k for k in linuxcnc_state_parameters() if isinstance(k, int))
