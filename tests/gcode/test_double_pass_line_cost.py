@@ -25,18 +25,20 @@ def _run(body, motion, feed):
     scope = {"st": _State(motion, feed), "D": Declined, "CYC": CYCLE_CODES, "CY": lambda *args: ("cycle", args)}
     exec(src, scope)  # noqa: S102 - the test's own code
     try:
-        return scope["plan"]((1.5, -2.0))
+        return scope["plan"]((1.5, -2.0, 3.0, "3.0"))
     except Declined as exc:
         return ("declined", str(exc))
 
 
 @pytest.mark.parametrize("motion", [None, 0, 1, 2, 3, 33, *sorted(CYCLE_CODES)])
 @pytest.mark.parametrize("feed", [0.0, -1.0, 800.0])
-def test_the_fold_has_the_outcome_of_the_call_then_the_tests(motion, feed):
-    calls = cycle_call(["X", "Y"], [(0, 0), (1, 1)])
-    motion_body = _mode_checks(None, False) + ["off = 1"]
+@pytest.mark.parametrize("words", [["X", "Y"], ["X", "Y", "R"], ["X", "Y", "I", "J"]])
+def test_the_fold_has_the_outcome_of_the_call_then_the_tests(motion, feed, words):
+    """A modal straight move, an R arc and an I/J arc (whose call declines a cycle)."""
+    calls = cycle_call(words, [(0, 0), (1, 1)])
+    motion_body = _mode_checks(None, len(words) > 2) + ["off = 1"]
     folded = _cycle_in_mode(calls, motion_body)
-    assert folded != calls + motion_body  # (folded: the modal X Y line)
+    assert folded != calls + motion_body  # (folded: a modal line)
     assert _run(folded, motion, feed) == _run(calls + motion_body, motion, feed)
 
 

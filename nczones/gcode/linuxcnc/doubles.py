@@ -1866,12 +1866,13 @@ def _mode_checks(code: int | None, arc: bool) -> list[str]:
 
 def _cycle_in_mode(calls: list[str], motion: list[str]) -> list[str]:
     """``calls + motion`` (a block's cycle call, :func:`~.double_cycles.cycle_call`, and its motion), but for a modal
-    straight move (the CAM line ``X.. Y..``) the same code with the cycle's call tested only where the mode is
-    neither G1 nor G0: ``mode = st.motion``, then ``if mode == 1`` (the feed's test), ``elif mode`` (the cycle's call,
-    else the decline of an arc without its words), ``elif mode is None`` (the decline of axis words without a mode).
-    Every mode has the same outcome as before: 0 and 1 are no cycle's, None is in no set of ints, and the call was
-    the line just before ``mode = st.motion`` (line44: a set lookup and some 7 bytecodes a line;
-    ``tests/gcode/test_double_pass_line_cost.py`` runs both for every mode).
+    move (the CAM lines ``X.. Y..`` and ``X.. Y.. R..``) the same code with the call's test of a cycle made only where
+    the mode is not the move's: ``mode = st.motion``, then a straight move's ``if mode == 1`` (the feed's test),
+    ``elif mode`` (the call, else the decline of an arc without its words), ``elif mode is None``; an arc's ``if mode
+    == 2 or mode == 3`` (the feed's test), ``elif mode in CYC`` (the call), then the declines of None and of G0/G1,
+    and any other mode's feed test.  Every mode has the outcome it had: 0-3 are no cycle's, None is in no set of
+    ints, and the call was the line just before ``mode = st.motion`` (line44: a set lookup and some 7 bytecodes a
+    line; ``tests/gcode/test_double_pass_line_cost.py`` runs both for every mode and feed).
 
     >>> calls = ["if st.motion in CYC: return CY(((0, v[0]), ), None, None, None, None, None)"]
     >>> print("\\n".join(_cycle_in_mode(calls, _mode_checks(None, False) + ["off = st.off"])))
@@ -1884,13 +1885,21 @@ def _cycle_in_mode(calls: list[str], motion: list[str]) -> list[str]:
     elif mode is None: raise D('axis words without a motion mode')
     off = st.off
     """
-    head = _mode_checks(None, False)
-    if len(calls) != 1 or not calls[0].startswith("if st.motion in CYC: return CY(") or motion[:len(head)] != head:
+    test = "if st.motion in CYC: "
+    if len(calls) != 1 or not calls[0].startswith(test):
         return calls + motion
-    call = calls[0].replace("if st.motion in CYC:", "if mode in CYC:", 1)
-    return ["mode = st.motion", _STRAIGHT_MODE[0], _STRAIGHT_MODE[1], "elif mode:", f"    {call}",
-            "    raise D('an arc without I, J, K or R')", "elif mode is None: raise D('axis words without a motion mode')",
-            *motion[len(head):]]
+    then = calls[0][len(test):]
+    none = "elif mode is None: raise D('axis words without a motion mode')"
+    straight, arc = _mode_checks(None, False), _mode_checks(None, True)
+    if motion[:len(straight)] == straight:
+        return ["mode = st.motion", _STRAIGHT_MODE[0], _STRAIGHT_MODE[1], "elif mode:", f"    if mode in CYC: {then}",
+                "    raise D('an arc without I, J, K or R')", none, *motion[len(straight):]]
+    if motion[:len(arc)] == arc:
+        why = "raise D('I, J, K or R without G2 or G3, or without a positive feed')"
+        return ["mode = st.motion", "if mode == 2 or mode == 3:", f"    if not st.feed > 0.0: {why}",
+                f"elif mode in CYC: {then}", none, f"elif mode < 2: {why}", f"elif not st.feed > 0.0: {why}",
+                *motion[len(arc):]]
+    return calls + motion
 
 
 def _groups(gs: list[int]) -> dict[str, int]:
