@@ -106,3 +106,14 @@ def test_lower_case_codes_are_still_found():
 
     assert may_cycle("g0 z2\ng98 g 081 x1 r2") and not may_cycle("g0 x81 y73")
     assert _may_compensate("g1 x1\ng041 d1") and not _may_compensate("g1 x41 y42")
+
+
+@settings(max_examples=100, deadline=None)
+@given(st.lists(_TEXT, min_size=1, max_size=4))
+def test_the_kept_line_count_is_each_text_s(texts):
+    """``_line_count`` keeps the last text's count: asked for texts in turn (some the same object again), each
+    count is the text's own."""
+    from nczones.pipeline.verification import _line_count
+
+    for text in texts + texts[:1] + texts[::-1]:
+        assert _line_count(text) == text.count("\n") + (1 if text and not text.endswith("\n") else 0)
