@@ -4,7 +4,8 @@
   and the code it replaces (the call, then the tests) have the same outcome for every motion mode and feed: the
   same return, the same decline, or on to the move.
 - ``state.linuxcnc_state_numbers``: the state parameters' numbers (the pass declines a read of one) without the
-  table's readers: the table's numbered keys."""
+  table's readers: the table's numbered keys.
+- ``doubles._first_rows``: a plan records its axes' first rows on its first run only: the rows of main's pass."""
 
 from __future__ import annotations
 
@@ -56,3 +57,19 @@ def test_the_state_numbers_are_the_table_s():
     from nczones.gcode.linuxcnc.state import linuxcnc_state_numbers, linuxcnc_state_parameters
 
     assert linuxcnc_state_numbers() == frozenset(k for k in linuxcnc_state_parameters() if isinstance(k, int))
+
+
+def test_each_axis_s_first_row_with_plans_run_again():
+    """``_first_rows``: a plan records its axes' first rows on its first run only; each axis's first row is the
+    first motion that moved it, whichever plan ran it (a flag left false from the start, or never cleared but
+    ``moved`` skipped, fails here)."""
+    from nczones.gcode.linuxcnc.doubles import double_pass
+    from nczones.machine import parse_machine
+
+    m = parse_machine('[machine]\naxes = ["X", "Y", "Z"]\n[machine.rapid]\nX = "1000"\nY = "1000"\nZ = "1000"\n'
+                      '[machine.reference]\nX = "0"\nY = "0"\nZ = "0"\n')
+    text = "G21 G90 G17 G54 F100\nG1 X1\nX2\nG1 Y1\nX3 Y2\nG2 X4 Y2 R1\nG1 X5 Z1\nX6\nM30\n"
+    path = double_pass(text, m, max_iterations=100)
+    assert path.first_row == (1, 3, 6)
+    path = double_pass("G21 G90 G17 G54 F100\nG0 Z5\nG2 X1 Y1 R1\nX2 Y0 R1\nM30\n", m, max_iterations=100)
+    assert path.first_row == (2, 2, 1)

@@ -1493,7 +1493,9 @@ class _Pass:
 
     def _compiled_plan(self, body: list[str]) -> Any:
         """The function ``plan(v)`` of ``body`` (then ``return False``) in the plans' scope."""
-        lines = ["def plan(v):"] + [f"    {b}" for b in body] + ["    return False"]
+        flags = sorted({b.strip()[3:-1] for b in body if b.strip().startswith("if NEW") and b.endswith(":")})
+        lines = ["def plan(v):", *([f"    global {', '.join(flags)}"] if flags else []),
+                 *(f"    {b}" for b in body), "    return False"]
         scope: dict[str, Any] = {"st": self, "D": Declined, "unset": self.unset, "pos": self.pos,
                                  "FR": self.first_row, "IJ_ARC": ij_check, "IOFFB": inch_offb,
                                  "AX": self.new_arcs.extend, "NEW": self.new_arcs,
@@ -1502,6 +1504,7 @@ class _Pass:
                                  "CYC": CYCLE_CODES, "TA": TA, "CS": self.cc, "LV": self.cyc.lits,
                                  "W": None if self.cc is None else self.cc.words}
         scope.update({f"C{i}": col for i, col in enumerate(self.columns)})
+        scope.update(dict.fromkeys(flags, True))  # (_first_rows: a plan's first run records its axes' first rows)
         exec(compiled("\n".join(lines) + "\n", "<double pass plan>"), scope)  # noqa: S102  # from reprs
         return scope["plan"]
 
@@ -1742,8 +1745,7 @@ class _Pass:
         last = [f"x{i}" if i in named else f"t{i}" for i in (ia, ib)]
         reads = [f"t{i} = pos[{i}]" for i in dict.fromkeys((ia, ib)) if i not in named]
         return [f"sa = pos[{ia}]; sb = pos[{ib}]; ob = {self.offb!r}",
-                f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
-                *ends, *self._levels(others, axes), *self._kept_words(axes),
+                *_first_rows(moved, f"NEW{plane}"), *ends, *self._levels(others, axes), *self._kept_words(axes),
                 *self._appends(axes), "n = len(C0)", *reads,
                 *self._arc_body(others, plane, ("sa", "sb", last[0], last[1]))]
 
@@ -1799,7 +1801,7 @@ class _Pass:
             return body + (planes if self.cc is None else arc_code(others, axes, planes))  # (.double_comp)
         moved = tuple(i for _k, i in axes)
         rapids = ["if not mode: st.rapids += 1"] if code is None else ["st.rapids += 1"] if code == 0 else []
-        straight = [f"if {' or '.join(f'not FR[{i}]' for i in moved)}: st.moved({moved!r})",
+        straight = [*_first_rows(moved, "NEWS"),
                     *self._straight_ends(axes), *self._levels(others, axes), *self._kept_words(axes),
                     *self._appends(axes), "n = len(C0)",
                     f"if n >= {self.rows}: st.full()", *rapids]
@@ -1862,6 +1864,19 @@ def _mode_checks(code: int | None, arc: bool) -> list[str]:
     if code == 1:
         return body + [_STRAIGHT_MODE[1].strip()]
     return body + (["raise D('an arc without I, J, K or R')"] if code else [])
+
+
+def _first_rows(moved: tuple[int, ...], flag: str) -> list[str]:
+    """The code that records the first row of the axes a motion moves (:meth:`_Pass.moved`), run by a plan only
+    until it has run once: a flag of the plan's own (``flag``, a global of its scope, :meth:`_Pass._compiled_plan`),
+    true until then (line44: one global read a line, not one item of ``FR`` an axis).  ``moved`` leaves every one
+    of the axes with its first row, and no first row is ever unset, so a later call would do nothing; calling it
+    where the old test did not (an axis with its row already) does nothing either.
+
+    >>> _first_rows((0, 1), "NEWS")
+    ['if NEWS:', '    st.moved((0, 1)); NEWS = False']
+    """
+    return [f"if {flag}:", f"    st.moved({moved!r}); {flag} = False"]
 
 
 def _cycle_in_mode(calls: list[str], motion: list[str]) -> list[str]:
