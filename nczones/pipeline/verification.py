@@ -101,14 +101,13 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     from ..blockskip import format_block_delete, used_switches
     from ..exact import exact
     from ..gcode import DEFAULT_ARC_TOLERANCE
-    from ..prover.nose import nose_zones
 
     t0 = time.perf_counter()
     margin = exact(options.margin)
     ranges = options.ranges(machine)
     # a lathe tool's nose radius: the tip zones enlarged by the nose's reach (nczones.prover.nose), or a
     # reason the verdict cannot be safe
-    machine, nose_note, nose_reason = nose_zones(machine)
+    machine, nose_note, nose_reason = _nose_zones(machine)
     nose_reasons = (Reason(nose_reason, None, None, "VF207"),) if nose_reason else ()
     modes = options.block_delete_modes(machine)
     mode = format_block_delete(modes)
@@ -183,6 +182,16 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
+
+
+def _nose_zones(machine: Machine) -> tuple[Machine, str | None, str | None]:
+    """:func:`nczones.prover.nose.nose_zones`, whose module (with the zone kinds' table) is imported for a lathe
+    only: it leaves any other machine unchanged, without a note or a reason (its first test; boot44)."""
+    if not machine.is_lathe:
+        return machine, None, None
+    from ..prover.nose import nose_zones
+
+    return nose_zones(machine)
 
 
 #: the words every o-word line holds (``o100 sub``, ``call``, ``while``, ``if``, ``do``, ``repeat``, ``return``,
