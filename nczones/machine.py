@@ -609,7 +609,7 @@ def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: 
         return out
     for key, value in raw.items():
         m = re.fullmatch(prefix + r"(\d{1,4})", key)
-        span = rd.loc.key(key, line)
+        span = functools.partial(rd.loc.key, key, line)  # found when a diagnostic needs it (start-up, boot44)
         if not m:
             rd.report("ZN101", f"[{section}]: {as_written(key)} is not a {what}; write {prefix} followed by its "
                       f"number, such as {prefix}1", span)
@@ -645,17 +645,23 @@ def _per_axis(
     ``(key, parent header line)`` when it may be written as ``key = { ... }``.
     """
     out: dict[str, Fraction] = {}
-    own_span = rd.loc.header(header_line)
-    if own_span is None and inline is not None:
-        own_span = rd.loc.key(*inline)
+
+    def own_span() -> SourceSpan | None:
+        found = rd.loc.header(header_line)
+        if found is None and inline is not None:
+            found = rd.loc.key(*inline)
+        return found
+
     if not isinstance(value, Mapping):
         rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {as_written(value)}", own_span)
         return out
+    # each span is found when a diagnostic needs it (a line search per key: start-up, boot44)
     for axis, raw in value.items():
+        span: Callable[[], SourceSpan | None]
         if header_line is None and inline is not None:
-            span = rd.loc.key_in(inline[0], inline[1], axis)
+            span = functools.partial(rd.loc.key_in, inline[0], inline[1], axis)
         else:
-            span = rd.loc.key(axis, header_line)
+            span = functools.partial(rd.loc.key, axis, header_line)
         if axis not in axes:
             rd.report("ZN110", f"{what}: unknown axis {as_written(axis)}; the machine's axes are {', '.join(axes)}", span)
             continue
@@ -1552,8 +1558,11 @@ def _limits(rd: _Reader, zt: Mapping[str, Any], label: str, header: int | None, 
             rd.report("ZN111", f"{label}: axis {as_written(axis)} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
             ok = False
             continue
-        lo = read_number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
-        hi = read_number(rd, highs[axis], f"{label}: max.{axis}", rd.loc.key(axis, header, 1 if axis in lows else 0)) if axis in highs else None
+        # the spans found when a diagnostic needs them (start-up, boot44)
+        lo = read_number(rd, lows[axis], f"{label}: min.{axis}", functools.partial(rd.loc.key, axis, header)) \
+            if axis in lows else None
+        hi = read_number(rd, highs[axis], f"{label}: max.{axis}",
+                         functools.partial(rd.loc.key, axis, header, 1 if axis in lows else 0)) if axis in highs else None
         if (axis in lows and lo is None) or (axis in highs and hi is None):
             ok = False
             continue
