@@ -879,6 +879,8 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
 def _unsupported_reasons(run: Interpretation, source_text: dict[int, str]) -> list[Reason]:
     """A reason for each code the run could not model (``run.unsupported``), with its line's text and hint;
     ``source_text``: the text of the lines wanted (:func:`source_lines`)."""
+    if not run.unsupported:
+        return []  # (the hints' module not imported: start-up, boot44)
     from ..gcode.dialects import unknown_hint
 
     reasons = []

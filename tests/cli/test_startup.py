@@ -68,7 +68,10 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           # motions: once its list is full); each a C extension to load
                           "struct", "heapq",
                           # issue 36 (boot43): the replay of witnesses at parameter values (none here)
-                          "nczones.pipeline.witnesses")
+                          "nczones.pipeline.witnesses",
+                          # issue 36 (boot44): argparse (a plain command line: nczones.commands.quick), the hints
+                          # of unsupported codes (none here), the nose radius (no lathe)
+                          "argparse", "gettext", "nczones.gcode.dialects", "nczones.prover.nose")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
