@@ -375,3 +375,20 @@ def test_each_combination_of_options_makes_the_standard_librarys_class(options):
         z.__setstate__([3, "r", [4], 1.5])
         assert (z.a, z.b, z.c, z.d) == (3, "r", [4], 1.5)
         assert copy.copy(x).c is x.c and copy.deepcopy(x).c == [2]
+
+
+def test_the_repr_wrapper_is_functools_wraps_s():
+    # boot44: _recursive_repr copies what functools.wraps copies, without it
+    def make(decorate):
+        class Sample:
+            a: int
+            b: str = "x"
+
+        return decorate(frozen=True, slots=True)(Sample)
+
+    ours, theirs = make(precompiled.dataclass).__repr__, make(dataclasses.dataclass).__repr__
+    for attr in ("__module__", "__name__", "__qualname__", "__doc__", "__annotations__"):
+        assert getattr(ours, attr) == getattr(theirs, attr), attr
+    assert set(vars(ours)) == set(vars(theirs)) == {"__wrapped__"}
+    assert ours.__wrapped__.__qualname__ == theirs.__wrapped__.__qualname__
+    assert repr(make(precompiled.dataclass)(1)) == "test_the_repr_wrapper_is_functools_wraps_s.<locals>.make.<locals>.Sample(a=1, b='x')"
