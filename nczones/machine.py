@@ -923,7 +923,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     if isinstance(raw_pulse, Mapping):
         pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, inline=("pulse", mline), positive=True, limit=Fraction(1))
     else:
-        q = read_number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
+        q = read_number(rd, raw_pulse, "[machine] pulse", functools.partial(rd.loc.key, "pulse", mline), positive=True, limit=Fraction(1))
         if q is not None:
             pulse = {a: q for a in axes}
 
@@ -935,7 +935,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     elif isinstance(raw_max_feed, Mapping):
         max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, inline=("max_feed", mline), positive=True)
     else:
-        q = read_number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
+        q = read_number(rd, raw_max_feed, "[machine] max_feed", functools.partial(rd.loc.key, "max_feed", mline), positive=True)
         if q is not None:
             max_feed = {a: q for a in axes}
 
@@ -945,7 +945,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     except ValueError:
         rd.report("ZN107", f"[machine] rapid_mode: {as_written(rapid_mode_raw)} is not allowed; use \"linear\" or \"dogleg\"", rd.loc.key("rapid_mode", mline))
         rapid_mode = RapidMode.LINEAR
-    period = read_number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
+    period = read_number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", functools.partial(rd.loc.key, "monitor_period_ms", mline), positive=True, limit=Fraction(1000))
 
     reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True, inline=("reference", mline))
     start_raw = mt.get("start")
@@ -1023,7 +1023,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                       "(such as \"0.002\"), \"linuxcnc\" or \"grbl\" (the control's own rule)",
                       rd.loc.key("arc_tolerance", mline))
         else:
-            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", rd.loc.key("arc_tolerance", mline),
+            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", functools.partial(rd.loc.key, "arc_tolerance", mline),
                                   nonnegative=True, limit=Fraction(10))
 
     path_mode = "G64"  # LinuxCNC's interpreter and a Fanuc control both start blending (specs/path-modes.md)
@@ -1037,7 +1037,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     path_tol: Fraction | None = None
     if "path_tolerance" in mt:
         path_tol = read_number(rd, mt["path_tolerance"], "[machine] path_tolerance",
-                               rd.loc.key("path_tolerance", mline), nonnegative=True, limit=Fraction(10))
+                               functools.partial(rd.loc.key, "path_tolerance", mline), nonnegative=True, limit=Fraction(10))
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     control_units, tc_quill, tc_g30, tc_position = _linuxcnc_control(rd, mt, mline, axes, dialect)
@@ -1182,13 +1182,13 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
     for key in ("g73_retract", "g83_clearance", "g71_retract", "g73_relief_x", "g73_relief_z", "g74_retract",
                 "g76_finish_allowance"):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=key not in (
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=key not in (
                 "g73_relief_x", "g73_relief_z"))
             if q is not None:
                 kw[key] = q
     for key in ("g71_depth", "g76_min_depth", "thread_chamfer"):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=True)
             if q is not None:
                 if key == "g71_depth" and q == 0:
                     rd.report("ZN106", f"[fanuc] {key}: \"0\" must be greater than 0", rd.loc.key(key, fline))
@@ -1196,7 +1196,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
                     kw[key] = q
     for key, top in (("thread_chamfer_angle", 90), ("g76_tool_angle", 120)):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=True)
             if q is not None:
                 if q > top:
                     rd.report("ZN105", f"[fanuc] {key}: {as_written(raw[key])} is out of range; allowed 0 to {top} "
@@ -1218,7 +1218,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
         else:
             kw["roughing_final_pass"] = raw["roughing_final_pass"]
     if "scaling_unit" in raw:
-        q = read_number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
+        q = read_number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", functools.partial(rd.loc.key, "scaling_unit", fline), positive=True,
                     limit=Fraction(1))
         if q is not None:
             kw["scaling_unit"] = q
@@ -1490,7 +1490,7 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
         rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", rd.loc.header(header))
         start = None
     else:
-        start = read_number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
+        start = read_number(rd, zt["from"], f"{label}: from", functools.partial(rd.loc.key, "from", header))
     raw_regions = zt.get("regions")
     if not isinstance(raw_regions, list) or not raw_regions:
         rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {as_written(raw_regions)}", rd.loc.key("regions", header))
