@@ -60,13 +60,13 @@ from .codes import (
     LANE_PLAIN,
     LINUXCNC_G,
     LINUXCNC_M,
+    SPLINE_CODES,
     LaneCodes,
     claimed,
     modal_groups,
 )
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
-from .linuxcnc.splines import SPLINE_CODES, spline_block, spline_pending
 from .linuxcnc.state import (
     DEBUG_FLAG,
     DEBUG_FLAG_DEFAULT,
@@ -622,6 +622,8 @@ class Interpreter:
     def finish(self) -> None:
         """End of the program text: a spline curve still waiting for data makes the result unknown."""
         if self.spline_state is not None:
+            from .linuxcnc.splines import spline_pending  # (a spline motion was met: loaded)
+
             self.unknown(_NAME_PENDING, spline_pending(self))
             self.spline_state = None
         if self._comp is not None:
@@ -1284,6 +1286,8 @@ class Interpreter:
                 self.cycle_il = None
                 self.last_cycle = None
             if self.spline_state is not None and k not in (52, 53, 62):
+                from .linuxcnc.splines import spline_pending  # (a spline motion was met: loaded)
+
                 self.unknown(gname(k), spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
                 self.spline_state = None
             if k == 800:
@@ -1916,6 +1920,9 @@ class Interpreter:
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
         elif motion in SPLINE_CODES:
+            # imported at the first spline motion (start-up, boot44)
+            from .linuxcnc.splines import spline_block
+
             spline_block(self, motion, axis_words, words, g1)
         else:
             raise InternalError(f"motion mode {motion}")

@@ -71,7 +71,9 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "nczones.pipeline.witnesses",
                           # issue 36 (boot44): argparse (a plain command line: nczones.commands.quick), the hints
                           # of unsupported codes (none here), the nose radius (no lathe)
-                          "argparse", "gettext", "nczones.gcode.dialects", "nczones.prover.nose")
+                          "argparse", "gettext", "nczones.gcode.dialects", "nczones.prover.nose",
+                          # (boot44) the spline motions' module (no G5 here)
+                          "nczones.gcode.linuxcnc.splines")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
