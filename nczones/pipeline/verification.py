@@ -710,8 +710,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     nominal values inside it.  ``result.extra["splits"]`` lists where
     (parameter, value as ``--param`` writes it).
     """
-    from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
-
+    # nczones.prover.cases is imported for parameter ranges (a case's centre, a split) or several cases only
     ranges = options.ranges(machine)
     cases = [ranges]
     results, first_run, splits = [], None, []
@@ -721,7 +720,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     boxes = not fast or (options.effective_dialect(machine) == "fanuc" and _fanuc_boxes_first(source.text))
     while cases:
         box = cases.pop(0)
-        case_machine, case_ranges = centred(machine, box) if box else (machine, box)
+        if box:
+            from ..prover.cases import centred
+
+            case_machine, case_ranges = centred(machine, box)
+        else:
+            case_machine, case_ranges = machine, box
         run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if boxes else (None, None)
         if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
             run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
@@ -739,6 +743,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
                 for v in result.violations))
         split = run.interpreter.branch_split
         if split is not None:
+            from ..prover.cases import MAX_CASES, budget_reason, split_box
+
             if interpretations + len(cases) + 3 <= MAX_CASES:
                 at = split[1] + next(r.centre for r in case_ranges if r.name == split[0])
                 splits.append((split[0], run.interpreter.written_deviation(split[0], split[1])))
@@ -749,7 +755,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
         results.append(result)
         if result.interrupted:  # Ctrl-C: the remaining cases are not verified
             break
-    result = merge(results, max_violations=options.max_violations, params=ranges)
+    if len(results) == 1:  # (what cases.merge gives one result)
+        result = replace(results[0], params=ranges)
+    else:
+        from ..prover.cases import merge
+
+        result = merge(results, max_violations=options.max_violations, params=ranges)
     # a witness must replay: one at values where the control stops before its line is dropped
     # (on the run's budget: an unchecked witness is not reported, VF203/VF204); only a witness at parameter
     # values has anything to replay (replayed_witnesses gives any other result back): without one, its module

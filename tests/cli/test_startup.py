@@ -72,8 +72,8 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           # issue 36 (boot44): argparse (a plain command line: nczones.commands.quick), the hints
                           # of unsupported codes (none here), the nose radius (no lathe)
                           "argparse", "gettext", "nczones.gcode.dialects", "nczones.prover.nose",
-                          # (boot44) the spline motions' module (no G5 here)
-                          "nczones.gcode.linuxcnc.splines")
+                          # (boot44) the spline motions' module (no G5 here), the parameter ranges' cases (none)
+                          "nczones.gcode.linuxcnc.splines", "nczones.prover.cases")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
