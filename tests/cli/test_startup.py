@@ -69,9 +69,8 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           "struct", "heapq",
                           # issue 36 (boot43): the replay of witnesses at parameter values (none here)
                           "nczones.pipeline.witnesses",
-                          # issue 36 (boot44): argparse (a plain command line: nczones.commands.quick), the hints
-                          # of unsupported codes (none here), the nose radius (no lathe)
-                          "argparse", "gettext", "nczones.gcode.dialects", "nczones.prover.nose",
+                          # issue 36 (boot44): the hints of unsupported codes (none here), the nose radius (no lathe)
+                          "nczones.gcode.dialects", "nczones.prover.nose",
                           # (boot44) the spline motions' module (no G5 here), the parameter ranges' cases (none)
                           "nczones.gcode.linuxcnc.splines", "nczones.prover.cases")
 
