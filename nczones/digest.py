@@ -25,21 +25,37 @@ __all__ = ["sha256", "OWN_BELOW", "LaterDigest"]
 #: Inputs of fewer bytes are hashed by CPython's built-in SHA-256 (no OpenSSL to load); larger ones by hashlib's.
 OWN_BELOW = 1 << 20
 
-try:
-    from _sha2 import sha256 as _own  # type: ignore[import-not-found,unused-ignore]  # Python >= 3.12
-except ImportError:
+
+
+def _built_in() -> Any:
+    """CPython's own ``sha256`` (None where there is none), imported at the first digest: a text report asks
+    for none, and the module is a C extension to load (issue 36).  Python 3.11 names it ``_sha256``, 3.12
+    ``_sha2``: the one this version has is asked (a failed import searches every folder of ``sys.path``)."""
+    import sys
+
     try:
-        from _sha256 import sha256 as _own  # type: ignore[import-not-found,no-redef,unused-ignore]  # Python 3.11
+        if sys.version_info >= (3, 12):
+            from _sha2 import sha256 as own  # type: ignore[import-not-found,unused-ignore]
+        else:
+            from _sha256 import sha256 as own  # type: ignore[import-not-found,no-redef,unused-ignore]
     except ImportError:
-        _own = None
+        return None
+    return own
+
+
+#: :func:`_built_in`'s answer, once asked
+_OWN: list[Any] = []
 
 
 def sha256(data: bytes | None = None) -> Any:
     """A SHA-256 hash object (``update``, ``digest``, ``hexdigest``) started with ``data``: the built-in one for
     fewer than :data:`OWN_BELOW` bytes, OpenSSL's (:mod:`hashlib`) for more or without ``data`` (a digest
     fed by ``update`` is a streamed file's, large)."""
-    if data is not None and len(data) < OWN_BELOW and _own is not None:
-        return _own(data)
+    if data is not None and len(data) < OWN_BELOW:
+        if not _OWN:
+            _OWN.append(_built_in())
+        if _OWN[0] is not None:
+            return _OWN[0](data)
     import hashlib
 
     return hashlib.sha256(b"" if data is None else data)

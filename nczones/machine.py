@@ -609,7 +609,7 @@ def _register_table(rd: _Reader, data: Mapping[str, Any], section: str, prefix: 
         return out
     for key, value in raw.items():
         m = re.fullmatch(prefix + r"(\d{1,4})", key)
-        span = rd.loc.key(key, line)
+        span = functools.partial(rd.loc.key, key, line)  # found when a diagnostic needs it (start-up, boot44)
         if not m:
             rd.report("ZN101", f"[{section}]: {as_written(key)} is not a {what}; write {prefix} followed by its "
                       f"number, such as {prefix}1", span)
@@ -645,17 +645,23 @@ def _per_axis(
     ``(key, parent header line)`` when it may be written as ``key = { ... }``.
     """
     out: dict[str, Fraction] = {}
-    own_span = rd.loc.header(header_line)
-    if own_span is None and inline is not None:
-        own_span = rd.loc.key(*inline)
+
+    def own_span() -> SourceSpan | None:
+        found = rd.loc.header(header_line)
+        if found is None and inline is not None:
+            found = rd.loc.key(*inline)
+        return found
+
     if not isinstance(value, Mapping):
         rd.report("ZN103", f"{what}: expected a table of axis values such as {{ X = \"0\" }}, got {as_written(value)}", own_span)
         return out
+    # each span is found when a diagnostic needs it (a line search per key: start-up, boot44)
     for axis, raw in value.items():
+        span: Callable[[], SourceSpan | None]
         if header_line is None and inline is not None:
-            span = rd.loc.key_in(inline[0], inline[1], axis)
+            span = functools.partial(rd.loc.key_in, inline[0], inline[1], axis)
         else:
-            span = rd.loc.key(axis, header_line)
+            span = functools.partial(rd.loc.key, axis, header_line)
         if axis not in axes:
             rd.report("ZN110", f"{what}: unknown axis {as_written(axis)}; the machine's axes are {', '.join(axes)}", span)
             continue
@@ -917,7 +923,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     if isinstance(raw_pulse, Mapping):
         pulse = _per_axis(rd, raw_pulse, axes, "[machine] pulse", rd.loc.section("machine.pulse"), required=True, inline=("pulse", mline), positive=True, limit=Fraction(1))
     else:
-        q = read_number(rd, raw_pulse, "[machine] pulse", rd.loc.key("pulse", mline), positive=True, limit=Fraction(1))
+        q = read_number(rd, raw_pulse, "[machine] pulse", functools.partial(rd.loc.key, "pulse", mline), positive=True, limit=Fraction(1))
         if q is not None:
             pulse = {a: q for a in axes}
 
@@ -929,7 +935,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     elif isinstance(raw_max_feed, Mapping):
         max_feed = _per_axis(rd, raw_max_feed, axes, "[machine.max_feed]", rd.loc.section("machine.max_feed"), required=True, inline=("max_feed", mline), positive=True)
     else:
-        q = read_number(rd, raw_max_feed, "[machine] max_feed", rd.loc.key("max_feed", mline), positive=True)
+        q = read_number(rd, raw_max_feed, "[machine] max_feed", functools.partial(rd.loc.key, "max_feed", mline), positive=True)
         if q is not None:
             max_feed = {a: q for a in axes}
 
@@ -939,7 +945,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     except ValueError:
         rd.report("ZN107", f"[machine] rapid_mode: {as_written(rapid_mode_raw)} is not allowed; use \"linear\" or \"dogleg\"", rd.loc.key("rapid_mode", mline))
         rapid_mode = RapidMode.LINEAR
-    period = read_number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", rd.loc.key("monitor_period_ms", mline), positive=True, limit=Fraction(1000))
+    period = read_number(rd, mt.get("monitor_period_ms", "5"), "[machine] monitor_period_ms", functools.partial(rd.loc.key, "monitor_period_ms", mline), positive=True, limit=Fraction(1000))
 
     reference = _per_axis(rd, mt.get("reference", {}), axes, "[machine.reference]", rd.loc.section("machine.reference"), required=True, inline=("reference", mline))
     start_raw = mt.get("start")
@@ -1017,7 +1023,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
                       "(such as \"0.002\"), \"linuxcnc\" or \"grbl\" (the control's own rule)",
                       rd.loc.key("arc_tolerance", mline))
         else:
-            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", rd.loc.key("arc_tolerance", mline),
+            arc_tol = read_number(rd, raw, "[machine] arc_tolerance", functools.partial(rd.loc.key, "arc_tolerance", mline),
                                   nonnegative=True, limit=Fraction(10))
 
     path_mode = "G64"  # LinuxCNC's interpreter and a Fanuc control both start blending (specs/path-modes.md)
@@ -1031,7 +1037,7 @@ def _build(rd: _Reader, data: dict[str, Any]) -> Machine | None:
     path_tol: Fraction | None = None
     if "path_tolerance" in mt:
         path_tol = read_number(rd, mt["path_tolerance"], "[machine] path_tolerance",
-                               rd.loc.key("path_tolerance", mline), nonnegative=True, limit=Fraction(10))
+                               functools.partial(rd.loc.key, "path_tolerance", mline), nonnegative=True, limit=Fraction(10))
 
     fanuc = _fanuc_settings(rd, data, mt, mline, axes, dialect, machine_type)
     control_units, tc_quill, tc_g30, tc_position = _linuxcnc_control(rd, mt, mline, axes, dialect)
@@ -1176,13 +1182,13 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
     for key in ("g73_retract", "g83_clearance", "g71_retract", "g73_relief_x", "g73_relief_z", "g74_retract",
                 "g76_finish_allowance"):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=key not in (
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=key not in (
                 "g73_relief_x", "g73_relief_z"))
             if q is not None:
                 kw[key] = q
     for key in ("g71_depth", "g76_min_depth", "thread_chamfer"):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=True)
             if q is not None:
                 if key == "g71_depth" and q == 0:
                     rd.report("ZN106", f"[fanuc] {key}: \"0\" must be greater than 0", rd.loc.key(key, fline))
@@ -1190,7 +1196,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
                     kw[key] = q
     for key, top in (("thread_chamfer_angle", 90), ("g76_tool_angle", 120)):
         if key in raw:
-            q = read_number(rd, raw[key], f"[fanuc] {key}", rd.loc.key(key, fline), nonnegative=True)
+            q = read_number(rd, raw[key], f"[fanuc] {key}", functools.partial(rd.loc.key, key, fline), nonnegative=True)
             if q is not None:
                 if q > top:
                     rd.report("ZN105", f"[fanuc] {key}: {as_written(raw[key])} is out of range; allowed 0 to {top} "
@@ -1212,7 +1218,7 @@ def _fanuc_settings(rd: _Reader, data: Mapping, mt: Mapping, mline: int | None, 
         else:
             kw["roughing_final_pass"] = raw["roughing_final_pass"]
     if "scaling_unit" in raw:
-        q = read_number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", rd.loc.key("scaling_unit", fline), positive=True,
+        q = read_number(rd, raw["scaling_unit"], "[fanuc] scaling_unit", functools.partial(rd.loc.key, "scaling_unit", fline), positive=True,
                     limit=Fraction(1))
         if q is not None:
             kw["scaling_unit"] = q
@@ -1484,7 +1490,7 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
         rd.report("ZN102", f"{label}: missing from (the lower bound of the first region on {ref or 'the reference axis'})", rd.loc.header(header))
         start = None
     else:
-        start = read_number(rd, zt["from"], f"{label}: from", rd.loc.key("from", header))
+        start = read_number(rd, zt["from"], f"{label}: from", functools.partial(rd.loc.key, "from", header))
     raw_regions = zt.get("regions")
     if not isinstance(raw_regions, list) or not raw_regions:
         rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {as_written(raw_regions)}", rd.loc.key("regions", header))
@@ -1552,8 +1558,11 @@ def _limits(rd: _Reader, zt: Mapping[str, Any], label: str, header: int | None, 
             rd.report("ZN111", f"{label}: axis {as_written(axis)} is in the polygon's plane and may not also have min/max", rd.loc.key(axis, header))
             ok = False
             continue
-        lo = read_number(rd, lows[axis], f"{label}: min.{axis}", rd.loc.key(axis, header)) if axis in lows else None
-        hi = read_number(rd, highs[axis], f"{label}: max.{axis}", rd.loc.key(axis, header, 1 if axis in lows else 0)) if axis in highs else None
+        # the spans found when a diagnostic needs them (start-up, boot44)
+        lo = read_number(rd, lows[axis], f"{label}: min.{axis}", functools.partial(rd.loc.key, axis, header)) \
+            if axis in lows else None
+        hi = read_number(rd, highs[axis], f"{label}: max.{axis}",
+                         functools.partial(rd.loc.key, axis, header, 1 if axis in lows else 0)) if axis in highs else None
         if (axis in lows and lo is None) or (axis in highs and hi is None):
             ok = False
             continue

@@ -18,7 +18,7 @@ To add a command: its module here with a ``configure(parser)`` function, and its
 
 from __future__ import annotations
 
-import importlib
+import sys
 from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
@@ -77,5 +77,6 @@ def configurer(name: str) -> Callable[[argparse.ArgumentParser], None]:
     'nczones.commands.check_machine'
     """
     module, _, function = COMMANDS[name].configure.partition(":")
-    configure: Callable[[argparse.ArgumentParser], None] = getattr(importlib.import_module(module), function)
+    __import__(module)  # importlib.import_module's work for an absolute name, without importlib (and warnings)
+    configure: Callable[[argparse.ArgumentParser], None] = getattr(sys.modules[module], function)
     return configure

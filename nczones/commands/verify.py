@@ -96,15 +96,28 @@ def verify_one(program: str, machine: Machine, options: VerifyOptions,
 
     ``stream``: a large plain program file is read as it is verified, not held in memory (issue 36)."""
     from ..pipeline.verification import verify_source
-    from ..report.progress import progress_for
 
     source = program_source(program, stream=stream)
-    bar = progress_for(sys.stderr, "verify")
+    bar = _progress_bar(sys.stderr)
     try:
         return source, verify_source(source, machine, options, progress=bar)
     finally:
         if bar is not None:
             bar.close()
+
+
+def _progress_bar(stream: Any) -> Any:
+    """:func:`nczones.report.progress.progress_for(stream, "verify") <nczones.report.progress.progress_for>`, whose
+    module is imported for a terminal only: a stream that is none (``isatty`` false, or not to be asked) gets no
+    bar there either (start-up, boot44)."""
+    try:
+        if not stream.isatty():
+            return None
+    except (AttributeError, ValueError, OSError):
+        return None
+    from ..report.progress import progress_for
+
+    return progress_for(stream, "verify")
 
 
 def check_output_path(path: str | None) -> None:

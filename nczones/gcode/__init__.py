@@ -247,7 +247,7 @@ class Interpretation:
         if self.dialect != "fanuc":
             return [f"o<{os.path.splitext(os.path.basename(f))[0]}> read from the subroutine file {f} (the proof holds for its text as read)"
                     for f in self.subroutine_files]
-        from .dialects import fanuc_notes
+        from .fanuc.program import fanuc_notes
 
         return fanuc_notes(self)
 

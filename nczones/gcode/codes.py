@@ -32,13 +32,16 @@ from ..precompiled import dataclass  # dataclasses.dataclass, its methods precom
 __all__ = ["CLAIMS", "LANES", "Code", "LINUXCNC_G", "LINUXCNC_M", "FANUC_G", "gname", "g_key",
            "claimed", "decline_reason", "modal_groups", "LANE_INTERPRETER", "LANE_PLAIN", "LANE_FASTPATH",
            "LANE_DOUBLES", "LANE_BOXES", "LANE_BOXRUN", "LATHE_REASON", "FANUC_CYCLE_G",
-           "FANUC_CANCEL_CYCLE_G", "LaneCodes"]
+           "FANUC_CANCEL_CYCLE_G", "LaneCodes", "SPLINE_CODES"]
 
 #: The lanes' names.
 LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES = "full", "plain", "fastpath", "doubles"
 #: The Fanuc box route's lanes: the plain lane into a ``columns.BoxSink``, the run reader (``boxrun``).
 LANE_BOXES, LANE_BOXRUN = "boxes", "boxrun"
 LANES = (LANE_INTERPRETER, LANE_PLAIN, LANE_FASTPATH, LANE_DOUBLES, LANE_BOXES, LANE_BOXRUN)
+#: G keys (10 x number) of the spline and NURBS motions (G5, G5.1, G5.2, G5.3, G6.2): ``linuxcnc.splines``
+#: interprets them, imported at the first one (start-up, boot44).
+SPLINE_CODES = frozenset({50, 51, 52, 53, 62})
 #: A lane's entry for a code it computes.
 CLAIMS = ""
 

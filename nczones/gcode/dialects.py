@@ -1,4 +1,5 @@
-"""What differs between the dialects, seen from outside: cross-dialect hints and report notes.
+"""What differs between the dialects, seen from outside: cross-dialect hints (a Fanuc run's report notes are
+:func:`nczones.gcode.fanuc.program.fanuc_notes`, beside the runners they read).
 
 A diagnostic that only one dialect gives says so: when a line the program was
 rejected for would be read by the other dialect (it parses there, and its G
@@ -17,15 +18,9 @@ G0 and G1 are in the same modal group; valid in the fanuc dialect: set dialect =
 from __future__ import annotations
 
 from ..errors import GcodeError
-from ..exact import format_decimal
 from ..precompiled import replace  # dataclasses.replace without importing dataclasses (start-up)
 
-# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
-TYPE_CHECKING = False
-if TYPE_CHECKING:
-    from . import Interpretation
-
-__all__ = ["with_hints", "accepts", "fanuc_notes", "unknown_hint", "HINTED_CODES"]
+__all__ = ["with_hints", "accepts", "unknown_hint", "HINTED_CODES"]
 
 #: Diagnostic codes a line alone decides (syntax, unknown codes, modal group conflicts, letters).
 HINTED_CODES = ("GC101", "GC102", "GC104", "GC105", "GC106", "GC107", "GC201", "GC202", "GC203", "GC204")
@@ -110,35 +105,3 @@ def unknown_hint(code: str, line: str, dialect: str) -> str:
         if accepts(line, "fanuc"):
             return "; " + _hint("fanuc")
     return ""
-
-
-def fanuc_notes(interp: Interpretation) -> list[str]:
-    """Report notes of a Fanuc run: decimal point input, rounded literals, alarms and stops."""
-    notes: list[str] = []
-    runners = interp.runners
-    settings = interp.machine.fanuc
-    dpi = sum(r.dpi_count for r in runners)
-    if dpi:
-        words = [w for r in runners for w in r.dpi_words][:20]
-        inc = settings.increment_mm
-        mode = settings.decimal_point_input
-        shown = ", ".join(f"line {ln}: {t}" for ln, t in words) + (", ..." if dpi > len(words) else "")
-        notes.append(f"{dpi} length word{'s' if dpi != 1 else ''} without a decimal point ({shown}): with "
-                     f"decimal_point_input = \"increment\" (parameter 3401#0 DPI = 0) X100 means {format_decimal(inc * 100)} mm, "
-                     f"with \"calculator\" 100 mm; this machine uses \"{mode}\"")
-    rounded = sum(r.rounded_count for r in runners)
-    if rounded:
-        words = [w for r in runners for w in r.rounded][:20]
-        shown = ", ".join(f"line {ln}: {t}" for ln, t in words) + (", ..." if rounded > len(words) else "")
-        notes.append(f"{rounded} literal{'s' if rounded != 1 else ''} with more decimals than the least input "
-                     f"increment ({settings.increment_system}) were rounded to it ({shown})")
-    for r in runners:
-        for number, message, span in r.stops:
-            notes.append(f"line {span.line}: #3006 = {number} stops the program with the message "
-                         f"\"{message}\"; it resumes at cycle start")
-    alarm = interp.alarm
-    if alarm is not None:
-        number, message, span = alarm
-        notes.append(f"line {span.line}: #3000 = {number} raises alarm {3000 + number} \"{message}\": the program "
-                     "stops there; nothing after it runs")
-    return notes

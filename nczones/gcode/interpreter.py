@@ -60,13 +60,13 @@ from .codes import (
     LANE_PLAIN,
     LINUXCNC_G,
     LINUXCNC_M,
+    SPLINE_CODES,
     LaneCodes,
     claimed,
     modal_groups,
 )
 from .expr import EvalError, lcnc_integer
 from .lexer import PlainBlock, fraction_raw, to_fraction
-from .linuxcnc.splines import SPLINE_CODES, spline_block, spline_pending
 from .linuxcnc.state import (
     DEBUG_FLAG,
     DEBUG_FLAG_DEFAULT,
@@ -622,7 +622,7 @@ class Interpreter:
     def finish(self) -> None:
         """End of the program text: a spline curve still waiting for data makes the result unknown."""
         if self.spline_state is not None:
-            self.unknown(_NAME_PENDING, spline_pending(self))
+            self.unknown(_NAME_PENDING, _spline_pending(self))
             self.spline_state = None
         if self._comp is not None:
             self._comp.program_end()
@@ -1284,7 +1284,7 @@ class Interpreter:
                 self.cycle_il = None
                 self.last_cycle = None
             if self.spline_state is not None and k not in (52, 53, 62):
-                self.unknown(gname(k), spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
+                self.unknown(gname(k), _spline_pending(self) + f" (motion changed to {gname(k)})", g1[1])
                 self.spline_state = None
             if k == 800:
                 self.motion = None
@@ -1916,7 +1916,7 @@ class Interpreter:
         elif motion in _CYCLES:
             self._cycle(motion, axis_words, words)
         elif motion in SPLINE_CODES:
-            spline_block(self, motion, axis_words, words, g1)
+            _spline_block(self, motion, axis_words, words, g1)
         else:
             raise InternalError(f"motion mode {motion}")
 
@@ -2723,3 +2723,17 @@ def blocks_from_words(lines: Iterable[Iterable[str]], file: str = "<words>") -> 
             col += len(t) + 1
         out.append(Block(tuple(ws), span, n))
     return out
+
+
+def _spline_block(it: Any, motion: int, axis_words: Any, words: Any, g1: Any) -> None:
+    """:func:`.linuxcnc.splines.spline_block`, its module imported at the first spline motion (start-up, boot44)."""
+    from .linuxcnc.splines import spline_block
+
+    spline_block(it, motion, axis_words, words, g1)
+
+
+def _spline_pending(it: Any) -> Any:
+    """:func:`.linuxcnc.splines.spline_pending` (asked once a spline motion has loaded the module)."""
+    from .linuxcnc.splines import spline_pending
+
+    return spline_pending(it)

@@ -101,14 +101,13 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
     from ..blockskip import format_block_delete, used_switches
     from ..exact import exact
     from ..gcode import DEFAULT_ARC_TOLERANCE
-    from ..prover.nose import nose_zones
 
     t0 = time.perf_counter()
     margin = exact(options.margin)
     ranges = options.ranges(machine)
     # a lathe tool's nose radius: the tip zones enlarged by the nose's reach (nczones.prover.nose), or a
     # reason the verdict cannot be safe
-    machine, nose_note, nose_reason = nose_zones(machine)
+    machine, nose_note, nose_reason = _nose_zones(machine)
     nose_reasons = (Reason(nose_reason, None, None, "VF207"),) if nose_reason else ()
     modes = options.block_delete_modes(machine)
     mode = format_block_delete(modes)
@@ -183,6 +182,16 @@ def _verify_source(source: ProgramSource, machine: Machine, options: VerifyOptio
                    timings=timings, extra={**result.extra, "counts": first_run.counts, "splits": result.extra.get("splits", ())},
                    program_digest=source.digest, machine_name=machine.name, machine_file=machine.source,
                    machine_sha256=machine.sha256, settings=settings)
+
+
+def _nose_zones(machine: Machine) -> tuple[Machine, str | None, str | None]:
+    """:func:`nczones.prover.nose.nose_zones`, whose module (with the zone kinds' table) is imported for a lathe
+    only: it leaves any other machine unchanged, without a note or a reason (its first test; boot44)."""
+    if not machine.is_lathe:
+        return machine, None, None
+    from ..prover.nose import nose_zones
+
+    return nose_zones(machine)
 
 
 #: the words every o-word line holds (``o100 sub``, ``call``, ``while``, ``if``, ``do``, ``repeat``, ``return``,
@@ -728,8 +737,7 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     nominal values inside it.  ``result.extra["splits"]`` lists where
     (parameter, value as ``--param`` writes it).
     """
-    from ..prover.cases import MAX_CASES, budget_reason, centred, merge, split_box
-
+    # nczones.prover.cases is imported for parameter ranges (a case's centre, a split) or several cases only
     ranges = options.ranges(machine)
     cases = [ranges]
     results, first_run, splits = [], None, []
@@ -739,7 +747,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
     boxes = not fast or (options.effective_dialect(machine) == "fanuc" and _fanuc_boxes_first(source.text))
     while cases:
         box = cases.pop(0)
-        case_machine, case_ranges = centred(machine, box) if box else (machine, box)
+        if box:
+            from ..prover.cases import centred
+
+            case_machine, case_ranges = centred(machine, box)
+        else:
+            case_machine, case_ranges = machine, box
         run, result = _fanuc_boxes(source, case_machine, options, skip, progress, profile) if boxes else (None, None)
         if run is None or result is None:  # the short Fanuc route declined (or does not apply): the full path
             run = interpretation(source, case_machine, options, skip=skip, ranges=case_ranges, fast=fast)
@@ -757,6 +770,8 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
                 for v in result.violations))
         split = run.interpreter.branch_split
         if split is not None:
+            from ..prover.cases import MAX_CASES, budget_reason, split_box
+
             if interpretations + len(cases) + 3 <= MAX_CASES:
                 at = split[1] + next(r.centre for r in case_ranges if r.name == split[0])
                 splits.append((split[0], run.interpreter.written_deviation(split[0], split[1])))
@@ -767,7 +782,12 @@ def _verify_cases(source: ProgramSource, machine: Machine, options: VerifyOption
         results.append(result)
         if result.interrupted:  # Ctrl-C: the remaining cases are not verified
             break
-    result = merge(results, max_violations=options.max_violations, params=ranges)
+    if len(results) == 1:  # (what cases.merge gives one result)
+        result = replace(results[0], params=ranges)
+    else:
+        from ..prover.cases import merge
+
+        result = merge(results, max_violations=options.max_violations, params=ranges)
     # a witness must replay: one at values where the control stops before its line is dropped
     # (on the run's budget: an unchecked witness is not reported, VF203/VF204); only a witness at parameter
     # values has anything to replay (replayed_witnesses gives any other result back): without one, its module
@@ -897,6 +917,8 @@ def _verify_run(run: Interpretation, machine: Machine, options: VerifyOptions, p
 def _unsupported_reasons(run: Interpretation, source_text: dict[int, str]) -> list[Reason]:
     """A reason for each code the run could not model (``run.unsupported``), with its line's text and hint;
     ``source_text``: the text of the lines wanted (:func:`source_lines`)."""
+    if not run.unsupported:
+        return []  # (the hints' module not imported: start-up, boot44)
     from ..gcode.dialects import unknown_hint
 
     reasons = []

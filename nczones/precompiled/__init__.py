@@ -4,8 +4,9 @@
 ``__hash__``, ``__setattr__`` and ``__delattr__`` and compiles it with ``exec``: about 0.4 ms per class.
 The functions are the same text at every start, so :func:`dataclass` takes them from
 :mod:`nczones.precompiled.functions`, a module of those texts written by ``python -m nczones.precompiled
---write`` (whose bytecode Python caches like any module's): a text found there is not compiled again, any
-other is compiled as ``dataclasses`` does.
+--write`` (whose bytecode Python caches like any module's; the texts no start-up of its scenarios makes are in
+:mod:`nczones.precompiled.functions_later`, loaded at the first one a run makes): a text found there is not
+compiled again, any other is compiled as ``dataclasses`` does.
 
 Importing ``dataclasses`` itself costs more than the classes (it imports ``inspect``, hence ``ast``, ``dis``,
 ``tokenize``, ``copy``...: some 10 ms of a 0.07 s verify), so :func:`dataclass` also does the work of
@@ -35,7 +36,6 @@ from __future__ import annotations
 
 import _thread
 import abc
-import functools
 import itertools
 import os
 import sys
@@ -111,10 +111,12 @@ def _record_patterns(re: Any) -> None:
     re._compiler.compile = recording
 
 _TABLE: list[dict[str, Any]] = []
+_LATER: list[dict[str, Any]] = []
 
 
 def _functions() -> dict[str, Any]:
-    """The generated module's table: a function's text → the function whose code is that text's."""
+    """The generated module's table: a function's text → the function whose code is that text's (the texts the
+    start-ups of ``python -m nczones.precompiled``'s scenarios make; the others are :func:`_later_functions`')."""
     if not _TABLE:
         if os.environ.get(RECORD_ENV):
             _TABLE.append({})
@@ -123,6 +125,20 @@ def _functions() -> dict[str, Any]:
 
             _TABLE.append(FUNCTIONS)
     return _TABLE[0]
+
+
+def _later_functions() -> dict[str, Any]:
+    """The table of the texts no start-up makes (:mod:`nczones.precompiled.functions_later`), loaded at the first
+    text :func:`_functions` lacks: a start-up unmarshals only the functions it may use (some 60 of 355 fewer,
+    about 1 million instructions, boot44)."""
+    if not _LATER:
+        if os.environ.get(RECORD_ENV):
+            _LATER.append({})
+        else:
+            from .functions_later import FUNCTIONS
+
+            _LATER.append(FUNCTIONS)
+    return _LATER[0]
 
 
 def _create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str, Any] | None = None,  # noqa: A002
@@ -142,6 +158,8 @@ def _create_fn(name: str, args: list[str], body: list[str], *, globals: dict[str
     local_vars = ", ".join(locals.keys())
     txt = f"def __create_fn__({local_vars}):\n{txt}\n return {name}"
     made = _functions().get(txt)
+    if made is None:
+        made = _later_functions().get(txt)
     if made is None:
         if os.environ.get(RECORD_ENV):
             import json
@@ -331,7 +349,6 @@ def _recursive_repr(user_function: Any) -> Any:
     """``dataclasses._recursive_repr``: ``...`` for a recursive call."""
     repr_running: set[tuple[int, int]] = set()
 
-    @functools.wraps(user_function)
     def wrapper(self: Any) -> Any:
         key = id(self), _thread.get_ident()
         if key in repr_running:
@@ -342,6 +359,14 @@ def _recursive_repr(user_function: Any) -> Any:
         finally:
             repr_running.discard(key)
         return result
+
+    # functools.wraps(user_function)'s work on a function made here, whose five attributes exist and whose
+    # __dict__ is empty (some 7,000 instructions a class less: start-up, boot44)
+    f: Any = user_function
+    wrapper.__module__, wrapper.__name__, wrapper.__qualname__ = f.__module__, f.__name__, f.__qualname__
+    wrapper.__doc__, wrapper.__annotations__ = f.__doc__, f.__annotations__
+    wrapper.__dict__.update(f.__dict__)
+    wrapper.__wrapped__ = f  # type: ignore[attr-defined]
     return wrapper
 
 

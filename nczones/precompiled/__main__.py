@@ -1,6 +1,7 @@
 """``python -m nczones.precompiled --write``: write :mod:`nczones.precompiled.functions`, the functions
-``dataclasses`` generates for the classes made with :func:`nczones.precompiled.dataclass`, and
-:mod:`nczones.precompiled.regexes`, the regular expressions the start-ups of :data:`SCENARIOS` compile;
+``dataclasses`` generates for the classes made with :func:`nczones.precompiled.dataclass` that the start-ups of
+:data:`SCENARIOS` make, :mod:`nczones.precompiled.functions_later`, the others (loaded at the first one a run
+makes), and :mod:`nczones.precompiled.regexes`, the regular expressions those start-ups compile;
 ``--check``: exit 1 when a module on disk is not what would be written (the test runs this)."""
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from . import RECORD_ENV, RECORD_PATTERNS_ENV
 
 PACKAGE = Path(__file__).resolve().parents[1]
 TARGET = Path(__file__).resolve().parent / "functions.py"
+LATER = Path(__file__).resolve().parent / "functions_later.py"
 REGEXES = Path(__file__).resolve().parent / "regexes.py"
 USES = re.compile(r"^from (?:\.+|nczones\.)precompiled import dataclass\b", re.M)
 
@@ -39,10 +41,14 @@ def texts() -> list[str]:
     return sorted({json.loads(line) for line in r.stderr.splitlines() if line.startswith('"')})
 
 
-def source(found: list[str]) -> str:
-    """The text of :mod:`nczones.precompiled.functions` for the function texts ``found``."""
+def source(found: list[str], later: bool = False) -> str:
+    """The text of :mod:`nczones.precompiled.functions` (``later``: ``functions_later``) for the function texts
+    ``found``."""
+    which = ("the functions no start-up of ``python -m nczones.precompiled``'s scenarios makes, " if later else
+             "the functions the start-ups of ``python -m nczones.precompiled``'s scenarios make, ")
     head = ['"""The functions ``dataclasses`` generates for nczones\' classes, compiled once like any module (written',
-            'by ``python -m nczones.precompiled --write``; do not edit: see :mod:`nczones.precompiled`)."""',
+            'by ``python -m nczones.precompiled --write``; do not edit: see :mod:`nczones.precompiled`): ' + which,
+            '``functions_later`` the others)."""' if not later else 'loaded at the first one a run makes)."""',
             "# ruff: noqa", "# mypy: ignore-errors", "# fmt: off", ""]
     body, table = [], []
     for i, txt in enumerate(found):
@@ -100,6 +106,12 @@ for argv in json.loads(sys.argv[1]):
 
 def patterns() -> list[tuple[str, str, int]]:
     """(type, text, flags) of every pattern the :data:`SCENARIOS` compile, from fresh interpreters."""
+    return start_ups()[0]
+
+
+def start_ups() -> tuple[list[tuple[str, str, int]], set[str]]:
+    """What the :data:`SCENARIOS` make, from fresh interpreters: (type, text, flags) of every pattern they compile,
+    and the text of every function :func:`nczones.precompiled.dataclass` (or ``make_function``) makes."""
     import tempfile
 
     with tempfile.TemporaryDirectory() as d:
@@ -110,16 +122,20 @@ def patterns() -> list[tuple[str, str, int]]:
         Path(d, "tape.nc").write_text("%\nO0001\nG21 G90 G54\nG01 X1. Y1. F100.\nM30\n%\n", encoding="utf-8")
         Path(d, "box_fanuc.toml").write_text(_BOX_FANUC, encoding="utf-8")  # box zones only: the box reader runs
         found = set()
+        made: set[str] = set()
         for argv in SCENARIOS:
             args = [a.format(d=d, m=PACKAGE.parent / "specs" / "machines") for a in argv]
-            env = dict(os.environ, **{RECORD_PATTERNS_ENV: "1", "NCZONES_CACHE": "off"})  # tomllib's patterns too
+            env = dict(os.environ, **{RECORD_PATTERNS_ENV: "1", RECORD_ENV: "1",
+                                      "NCZONES_CACHE": "off"})  # tomllib's patterns too
             r = subprocess.run([sys.executable, "-c", _RUN, json.dumps([args])], capture_output=True, text=True,
                                env=env, cwd=d, check=True)
             for line in r.stderr.splitlines():
                 if line.startswith('["pattern"'):
                     kind, text, flags = json.loads(line)[1]
                     found.add((kind, text, flags))
-    return sorted(found)
+                elif line.startswith('"'):
+                    made.add(json.loads(line))
+    return sorted(found), made
 
 
 def regex_source(found: list[tuple[str, str, int]]) -> str:
@@ -150,7 +166,10 @@ def regex_source(found: list[tuple[str, str, int]]) -> str:
 
 
 def main() -> int:
-    wanted = {TARGET: source(texts()), REGEXES: regex_source(patterns())}
+    found, made = start_ups()
+    every = texts()
+    wanted = {TARGET: source([t for t in every if t in made]), LATER: source([t for t in every if t not in made], True),
+              REGEXES: regex_source(found)}
     stale = 0
     for target, text in wanted.items():
         current = target.read_text(encoding="utf-8") if target.exists() else ""

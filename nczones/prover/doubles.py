@@ -265,7 +265,7 @@ def prove_double_path(path: Any, machine: Machine, margin: Fraction, started: fl
     began (:func:`time.perf_counter`), for the timings; ``windows`` the proof of the windows the pass handed
     over before ``path``, its last."""
     from ..gcode.runner_common import assumed_modal_notes
-    from .smt import z3_version
+    from .solver_version import z3_version
 
     if declares_solids(machine):
         return None  # the boxes are about the controlled point; tool solids need the full path

@@ -263,7 +263,7 @@ def prove_boxes(run: Any, machine: Machine, margin: Fraction, started: float | N
     (``nczones.gcode.fanuc.columns.BoxSink``: no segment per straight move).  The box is tested after every chunk
     (it only grows): the first chunk that makes it leave the allowed set stops the walk, so a program this route
     cannot prove costs little of a second reading."""
-    from .smt import z3_version
+    from .solver_version import z3_version
 
     if started is None:
         started = time.perf_counter()

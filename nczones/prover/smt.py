@@ -48,6 +48,7 @@ from ..precompiled import dataclass  # dataclasses.dataclass, its methods precom
 from ..zones import BoxZone, PolygonZone, SteppedZone, Zone, ZonePoint
 from ..zones.kinds import KindTable
 from .exact import reachable
+from .solver_version import z3_version
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -60,68 +61,6 @@ if TYPE_CHECKING:
     import z3
 
 
-def z3_version() -> str:
-    """The version of the Z3 library (``major.minor.build``), without loading Z3 when it is not loaded yet.
-
-    >>> import z3
-    >>> z3_version() == z3.get_version_string()
-    True
-    """
-    import sys
-
-    loaded = sys.modules.get("z3")
-    if loaded is not None:
-        return str(loaded.get_version_string())
-    found = _wheel_version()
-    if found is not None:  # the wheel's version is the library's, with a fourth (revision) number
-        return ".".join(found.split(".")[:3])
-    import z3  # a Z3 installed without its metadata (a system package)
-
-    return str(z3.get_version_string())
-
-
-def _find_spec(name: str) -> Any:
-    """``importlib.util.find_spec(name)`` for a top-level module not imported yet: the first spec a finder of
-    ``sys.meta_path`` gives (None if none does), without importing :mod:`importlib.util` (with
-    :mod:`contextlib`, some 1.5 ms of a small verify, issue 36)."""
-    import sys
-
-    for finder in sys.meta_path:
-        find = getattr(finder, "find_spec", None)
-        spec = find(name, None) if find is not None else None
-        if spec is not None:
-            return spec
-    return None
-
-
-def _wheel_version() -> str | None:
-    """The version of the ``z3-solver`` wheel that holds the ``z3`` package an import would load, from the
-    ``METADATA`` of its ``.dist-info`` folder beside it; None unless there is exactly one such folder.
-
-    Read directly: :mod:`importlib.metadata` costs about 10 ms of start-up to import.
-    """
-    import os
-
-    try:
-        spec = _find_spec("z3")
-    except (ImportError, ValueError):
-        return None
-    if spec is None or not spec.submodule_search_locations:
-        return None
-    folder = os.path.dirname(os.path.abspath(next(iter(spec.submodule_search_locations))))
-    try:
-        infos = [n for n in os.listdir(folder) if n.lower().startswith("z3_solver-") and n.endswith(".dist-info")]
-        if len(infos) != 1:
-            return None
-        with open(os.path.join(folder, infos[0], "METADATA"), encoding="utf-8") as fh:
-            for line in fh:
-                if line.startswith("Version:"):
-                    return line.split(":", 1)[1].strip() or None
-                if not line.strip():  # the headers end at the first blank line
-                    break
-    except OSError:
-        return None
-    return None
 F0 = Fraction(0)
 
 

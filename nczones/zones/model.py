@@ -16,7 +16,6 @@ meeting no forbid zone's interior).  ``d = 0`` is plain membership.
 
 from __future__ import annotations
 
-import bisect
 import enum
 from collections.abc import Mapping
 from fractions import Fraction
@@ -40,6 +39,16 @@ __all__ = [
 
 Point = Mapping[str, Fraction]
 _ZERO = Fraction(0)
+
+
+def _bisect_left(a: tuple[Fraction, ...], x: Fraction) -> int:
+    """:func:`bisect.bisect_left`, imported at the first search (a machine without stepped zones makes none, and
+    ``_bisect`` is a C extension to load at start-up, boot44); the name is then the function itself."""
+    global _bisect_left
+    from bisect import bisect_left
+
+    _bisect_left = bisect_left
+    return bisect_left(a, x)
 
 
 class ZonePoint(enum.Enum):
@@ -137,7 +146,7 @@ class SteppedZone:
         """The same lookup by binary search (O(log n))."""
         if r < self.start or r > self.regions[-1].upto:
             return None
-        return bisect.bisect_left(self.uptos, r)
+        return _bisect_left(self.uptos, r)
 
     def contains(self, p: Point) -> bool:
         """Closed-set membership."""

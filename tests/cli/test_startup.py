@@ -68,7 +68,11 @@ NOT_FOR_A_SMALL_VERIFY = ("numpy", "z3", "shapely", "matplotlib", "importlib.met
                           # motions: once its list is full); each a C extension to load
                           "struct", "heapq",
                           # issue 36 (boot43): the replay of witnesses at parameter values (none here)
-                          "nczones.pipeline.witnesses")
+                          "nczones.pipeline.witnesses",
+                          # issue 36 (boot44): the hints of unsupported codes (none here), the nose radius (no lathe)
+                          "nczones.gcode.dialects", "nczones.prover.nose",
+                          # (boot44) the spline motions' module (no G5 here), the parameter ranges' cases (none)
+                          "nczones.gcode.linuxcnc.splines", "nczones.prover.cases")
 
 
 def loaded_by_verify(tmp_path, lines: list[str]) -> set[str]:
@@ -278,13 +282,18 @@ def test_a_small_fanuc_verify_loads_neither_dataclasses_nor_pathlib(tmp_path):
 def test_the_package_imports_its_public_names_at_their_first_use():
     # issue 36 (startup36d): `import nczones` loads none of the modules behind its public names, nor typing, so
     # that `python -m nczones` sets the collector's threshold before they make their objects
-    behind = ("nczones.machine", "nczones.motion", "nczones.zones", "typing")
+    behind = ("nczones.machine", "nczones.motion", "nczones.zones", "typing", "nczones.exact.elementary")
     probe = (f"import sys, nczones\nbefore = sorted(m for m in {behind!r} if m in sys.modules)\n"
              "from nczones import Machine, load_machine\nfrom nczones.machine import Machine as M, load_machine as L\n"
              "assert (Machine, load_machine) == (M, L) and nczones.SegmentKind.LINE is not None\n"
              # exact() has its subpackage's name: still the function once the subpackage is imported
              "import nczones.exact.decimals\nfrom nczones import exact\nfrom nczones.exact import exact as E\n"
              "assert exact is E and nczones.exact is E and callable(exact)\n"
+             # boot44: nczones.exact's enclosures of pi and the trigonometric functions at their first use too
+             "from nczones.exact import atan_interval, pi_interval\nel = sys.modules['nczones.exact.elementary']\n"
+             "assert (atan_interval, pi_interval) == (el.atan_interval, el.pi_interval)\n"
+             "ex = sys.modules['nczones.exact']\nassert all(getattr(ex, n) is not None for n in ex.__all__)\n"
+             "try:\n    ex.no_such_name\nexcept AttributeError as e:\n    assert 'no_such_name' in str(e)\n"
              # every name of __all__ is reachable (a new public name needs its row in nczones._MODULE_OF)
              "assert all(getattr(nczones, n) is not None for n in nczones.__all__)\n"
              "try:\n    nczones.no_such_name\nexcept AttributeError as e:\n    assert 'no_such_name' in str(e)\n"

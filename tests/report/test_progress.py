@@ -93,3 +93,34 @@ def test_cli_stderr_is_quiet_on_a_pipe():
                            capture_output=True, text=True, cwd=EX)
         assert r.returncode == 0, r.stderr
         assert r.stderr == ""
+
+
+class _Closed(io.StringIO):
+    def isatty(self):
+        raise ValueError("I/O operation on closed file")
+
+
+def test_verify_asks_for_a_bar_as_progress_for_answers(monkeypatch):
+    # issue 36 (boot44): nczones verify imports the progress module for a terminal only; its answer is
+    # progress_for's for every kind of stream (a terminal, TERM=dumb, a file, one that cannot be asked, none)
+    from nczones.commands.verify import _progress_bar
+
+    for term in ("xterm", "dumb"):
+        monkeypatch.setenv("TERM", term)
+        for stream in (FakeTTY(), io.StringIO(), _Closed(), object(), None):
+            ours, theirs = _progress_bar(stream), progress_for(stream if stream is not None else io.StringIO(),
+                                                                "verify")
+            assert (ours is None) == (theirs is None), (term, stream)
+            assert ours is None or (type(ours), ours.label) == (type(theirs), theirs.label)
+
+
+def test_a_verify_without_a_terminal_loads_no_progress_module(tmp_path):
+    # a JSON report (a text report asks the module whether to colour)
+    program = tmp_path / "small.ngc"
+    program.write_text("G90 G21\nG1 X10 Y10 F100\nM2\n")
+    code = (f"import sys\nfrom nczones.cli import main\nassert main(['verify', {str(program)!r}, '--machine', "
+            f"{str(MACHINES / 'grinder.toml')!r}, '--format', 'json']) in (0, 1, 3)\n"
+            "print('nczones.report.progress' in sys.modules)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines()[-1] == "False"

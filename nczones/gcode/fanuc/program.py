@@ -39,6 +39,7 @@ from fractions import Fraction
 
 from ...blockskip import skipped_switches
 from ...errors import Diagnostic, GcodeError, SourceSpan
+from ...exact import format_decimal
 from ...machine import FanucSettings
 from ...precompiled import dataclass, field  # start-up: no dataclasses import
 from ..blocks import LANE_FULL
@@ -79,8 +80,10 @@ if TYPE_CHECKING:
     from pathlib import Path
     from typing import Any, Protocol, TypeVar
 
+    from .. import Interpretation
+
 __all__ = ["iter_blocks", "FanucRunner", "LENGTH_LETTERS", "needs_language_layer", "MAX_MACRO_LEVELS",
-           "MAX_CALL_DEPTH"]
+           "MAX_CALL_DEPTH", "fanuc_notes"]
 
 if TYPE_CHECKING:  # names of annotations only
     _T = TypeVar("_T")
@@ -1902,3 +1905,35 @@ def iter_blocks(
         runner_out.append(runner)
     return runner.run()
 
+
+def fanuc_notes(interp: Interpretation) -> list[str]:
+    """Report notes of a Fanuc run: decimal point input, rounded literals, alarms and stops (here, not in
+    :mod:`nczones.gcode.dialects`: a Fanuc run has this module loaded; start-up, boot44)."""
+    notes: list[str] = []
+    runners = interp.runners
+    settings = interp.machine.fanuc
+    dpi = sum(r.dpi_count for r in runners)
+    if dpi:
+        words = [w for r in runners for w in r.dpi_words][:20]
+        inc = settings.increment_mm
+        mode = settings.decimal_point_input
+        shown = ", ".join(f"line {ln}: {t}" for ln, t in words) + (", ..." if dpi > len(words) else "")
+        notes.append(f"{dpi} length word{'s' if dpi != 1 else ''} without a decimal point ({shown}): with "
+                     f"decimal_point_input = \"increment\" (parameter 3401#0 DPI = 0) X100 means {format_decimal(inc * 100)} mm, "
+                     f"with \"calculator\" 100 mm; this machine uses \"{mode}\"")
+    rounded = sum(r.rounded_count for r in runners)
+    if rounded:
+        words = [w for r in runners for w in r.rounded][:20]
+        shown = ", ".join(f"line {ln}: {t}" for ln, t in words) + (", ..." if rounded > len(words) else "")
+        notes.append(f"{rounded} literal{'s' if rounded != 1 else ''} with more decimals than the least input "
+                     f"increment ({settings.increment_system}) were rounded to it ({shown})")
+    for r in runners:
+        for number, message, span in r.stops:
+            notes.append(f"line {span.line}: #3006 = {number} stops the program with the message "
+                         f"\"{message}\"; it resumes at cycle start")
+    alarm = interp.alarm
+    if alarm is not None:
+        number, message, span = alarm
+        notes.append(f"line {span.line}: #3000 = {number} raises alarm {3000 + number} \"{message}\": the program "
+                     "stops there; nothing after it runs")
+    return notes

@@ -175,7 +175,6 @@ from .double_arcs import (
     refined,
 )
 from .double_arcs import INCH as INCH_ARC
-from .double_comp import Comp, arc_code, comp_body, comp_others, straight_code
 from .double_cycles import (
     CYCLE_CODES,
     Cycles,
@@ -208,6 +207,49 @@ if TYPE_CHECKING:
     from ..source import FileText
 
 __all__ = ["CODES", "Declined", "DoublePath", "double_pass"]
+
+
+# Cutter compensation (.double_comp, with .comp_floats: some 2 million instructions to import, boot44) is imported
+# when a block of the program writes G40/G41/G42 or its machine compensates: a pass without it asks only these.
+def Comp(st: Any, machine: Any, declined: Any) -> Any:  # noqa: N802  # the class's name at its call
+    """:class:`.double_comp.Comp` (the module imported now)."""
+    from .double_comp import Comp as made
+
+    return made(st, machine, declined)
+
+
+def comp_body(st: Any, groups: dict[str, int], ms: list[int], ts: list[int], qs: list[int], others: list[str],
+              declined: Any) -> tuple[list[str], list[str]]:
+    """:func:`.double_comp.comp_body`: without a :class:`Comp` and without a compensation code in the block it
+    adds nothing (its first test), and its module is not imported."""
+    if st.cc is None and "comp" not in groups:
+        return [], []
+    from .double_comp import comp_body as body
+
+    return body(st, groups, ms, ts, qs, others, declined)
+
+
+def comp_others(groups: dict[str, int], others: list[str]) -> list[str]:
+    """:func:`.double_comp.comp_others`: ``others`` itself in a block without a compensation code."""
+    if "comp" not in groups:
+        return others
+    from .double_comp import comp_others as kept
+
+    return kept(groups, others)
+
+
+def arc_code(others: list[str], axes: list[tuple[int, int]], normal: list[str]) -> list[str]:
+    """:func:`.double_comp.arc_code` (asked with a :class:`Comp` only)."""
+    from .double_comp import arc_code as code
+
+    return code(others, axes, normal)
+
+
+def straight_code(axes: list[tuple[int, int]], normal: list[str], plane: tuple[int, int] | None = None) -> list[str]:
+    """:func:`.double_comp.straight_code` (asked with a :class:`Comp` only)."""
+    from .double_comp import straight_code as code
+
+    return code(axes, normal, plane)
 
 #: Motions the pass keeps (8 bytes per axis each) when it is run without ``on_window``: it keeps them all.
 MAX_MOTIONS = 2_000_000

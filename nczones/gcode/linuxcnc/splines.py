@@ -41,6 +41,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from ...motion import PLANE_AXES, Plane, SegmentKind, SplineCurve
+from ..codes import SPLINE_CODES  # G keys (10 x number) handled here
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -49,8 +50,6 @@ if TYPE_CHECKING:
 
 __all__ = ["SPLINE_CODES", "spline_block", "spline_pending"]
 
-#: G keys (10 x number) handled here.
-SPLINE_CODES = frozenset({50, 51, 52, 53, 62})
 _NAME = {50: "G5", 51: "G5.1", 52: "G5.2", 53: "G5.3", 62: "G6.2"}
 
 
