@@ -25,7 +25,7 @@ from .commands import COMMANDS, configurer
 from .commands.conventions import (
     EXIT_INTERRUPTED,
     EXIT_TERMINATED,
-    ClosedOutput,
+    closed_output,
     output_closed,
     report_failure,
 )
@@ -213,19 +213,20 @@ def _run_handler(args: argparse.Namespace) -> int:
     """Run the chosen command: its exit status; whatever stops it is told by
     :func:`~nczones.commands.conventions.report_failure` (a user error one line, exit 2; a bug exit 4).
 
-    With standard output closed, the command runs with :class:`~nczones.commands.conventions.ClosedOutput` as
+    With standard output closed, the command runs with :func:`~nczones.commands.conventions.closed_output` as
     ``sys.stdout``: whatever it writes there stops it, exit 2, as ``verify`` (``sys.stdout`` is given back
     after, so Python's own exit still finds it None)."""
     previous = sys.stdout
-    if output_closed():
-        sys.stdout = ClosedOutput()
+    closed = output_closed()
+    if closed:
+        sys.stdout = closed_output()
     try:
         code: int = args.handler(args)
         return code
     except (Exception, KeyboardInterrupt) as exc:  # noqa: BLE001 - each kind is told and given its status there
         return report_failure(exc, getattr(args, "command", "") or "")
     finally:
-        if isinstance(sys.stdout, ClosedOutput):
+        if closed:
             sys.stdout = previous
 
 

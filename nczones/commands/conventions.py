@@ -28,7 +28,7 @@ from ..errors import Diagnostic, InputError, InvalidArgument, NczonesError
 # typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from typing import TextIO
+    from typing import Any, TextIO
 
     from ..gcode.source import ProgramSource
     from ..machine import Machine
@@ -36,7 +36,7 @@ if TYPE_CHECKING:
 __all__ = ["EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL", "EXIT_INTERRUPTED",
            "EXIT_TERMINATED", "EXTRAS", "usage_error", "add_dialect_arguments", "with_dialect", "library_folder",
            "program_source", "arc_tolerance", "budget_seconds", "missing_extra", "report_failure",
-           "standard_output", "ClosedOutput", "output_closed", "tell_beside_file"]
+           "standard_output", "closed_output", "output_closed", "tell_beside_file"]
 
 EXIT_OK = 0
 EXIT_FAIL = 1
@@ -188,44 +188,48 @@ def standard_output() -> TextIO:
 
 def output_closed() -> bool:
     """Whether standard output is closed: ``sys.stdout`` None (the process started without file descriptor 1,
-    ``cmd >&-``), closed, or :class:`ClosedOutput`."""
+    ``cmd >&-``) or a closed stream (:func:`closed_output`'s says so too)."""
     stream = sys.stdout
-    return stream is None or isinstance(stream, ClosedOutput) or bool(getattr(stream, "closed", False))
+    return stream is None or bool(getattr(stream, "closed", False))
 
 
-class ClosedOutput:
-    """``sys.stdout`` while a command runs with standard output closed (:func:`nczones.cli.main` puts it there):
-    writing, flushing or reaching its bytes raises the :class:`OSError` that :func:`report_failure` tells as
+def closed_output() -> Any:
+    """What ``sys.stdout`` is while a command runs with standard output closed (``nczones.cli`` puts it there): a
+    stream whose writing, flushing or bytes raise the :class:`OSError` that :func:`report_failure` tells as
     "cannot read or write: standard output is closed", exit 2.  Without it, ``print()`` with ``sys.stdout`` None
     writes nothing and the command would exit 0 with its output lost (mend44).  A line that only tells about a
-    file the command wrote goes through :func:`tell_beside_file`, which leaves it out instead.
+    file the command wrote goes through :func:`tell_beside_file`, which leaves it out instead.  (The class is
+    made here, when standard output is closed: not at every start, issue 36.)
 
-    >>> ClosedOutput().write("report")
+    >>> closed_output().write("report")
     Traceback (most recent call last):
     OSError: [Errno 9] standard output is closed
     """
 
-    __slots__ = ()
+    class ClosedOutput:
+        __slots__ = ()
+        closed = True
 
-    def write(self, text: str) -> int:
-        raise _closed_error()
+        def write(self, text: str) -> int:
+            raise _closed_error()
 
-    def writelines(self, lines: object) -> None:
-        raise _closed_error()
+        def writelines(self, lines: object) -> None:
+            raise _closed_error()
 
-    def flush(self) -> None:
-        raise _closed_error()
+        def flush(self) -> None:
+            raise _closed_error()
 
-    def fileno(self) -> int:
-        raise _closed_error()
+        def fileno(self) -> int:
+            raise _closed_error()
 
-    def isatty(self) -> bool:
-        return False
+        def isatty(self) -> bool:
+            return False
 
-    @property
-    def buffer(self) -> object:
-        """Standard output's bytes (``linuxcnc-filter`` writes the program there): closed too."""
-        raise _closed_error()
+        @property
+        def buffer(self) -> object:  # (linuxcnc-filter writes the program's bytes there)
+            raise _closed_error()
+
+    return ClosedOutput()
 
 
 def tell_beside_file(text: str) -> None:
