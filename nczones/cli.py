@@ -22,7 +22,13 @@ from collections.abc import Callable, Sequence
 
 from . import __version__
 from .commands import COMMANDS, configurer
-from .commands.conventions import EXIT_INTERRUPTED, EXIT_TERMINATED, report_failure
+from .commands.conventions import (
+    EXIT_INTERRUPTED,
+    EXIT_TERMINATED,
+    closed_output,
+    output_closed,
+    report_failure,
+)
 
 # typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
 TYPE_CHECKING = False
@@ -205,12 +211,23 @@ def _same_plural(singular: str, plural: str, n: int) -> str:
 
 def _run_handler(args: argparse.Namespace) -> int:
     """Run the chosen command: its exit status; whatever stops it is told by
-    :func:`~nczones.commands.conventions.report_failure` (a user error one line, exit 2; a bug exit 4)."""
+    :func:`~nczones.commands.conventions.report_failure` (a user error one line, exit 2; a bug exit 4).
+
+    With standard output closed, the command runs with :func:`~nczones.commands.conventions.closed_output` as
+    ``sys.stdout``: whatever it writes there stops it, exit 2, as ``verify`` (``sys.stdout`` is given back
+    after, so Python's own exit still finds it None)."""
+    previous = sys.stdout
+    closed = output_closed()
+    if closed:
+        sys.stdout = closed_output()
     try:
         code: int = args.handler(args)
         return code
     except (Exception, KeyboardInterrupt) as exc:  # noqa: BLE001 - each kind is told and given its status there
         return report_failure(exc, getattr(args, "command", "") or "")
+    finally:
+        if closed:
+            sys.stdout = previous
 
 
 def run() -> NoReturn:

@@ -28,7 +28,7 @@ from ..errors import Diagnostic, InputError, InvalidArgument, NczonesError
 # typing is not imported by `nczones --help` (issue 36); a type checker takes this name as true
 TYPE_CHECKING = False
 if TYPE_CHECKING:
-    from typing import TextIO
+    from typing import Any, TextIO
 
     from ..gcode.source import ProgramSource
     from ..machine import Machine
@@ -36,7 +36,7 @@ if TYPE_CHECKING:
 __all__ = ["EXIT_OK", "EXIT_FAIL", "EXIT_INPUT", "EXIT_UNKNOWN", "EXIT_INTERNAL", "EXIT_INTERRUPTED",
            "EXIT_TERMINATED", "EXTRAS", "usage_error", "add_dialect_arguments", "with_dialect", "library_folder",
            "program_source", "arc_tolerance", "budget_seconds", "missing_extra", "report_failure",
-           "standard_output"]
+           "standard_output", "closed_output", "output_closed", "tell_beside_file"]
 
 EXIT_OK = 0
 EXIT_FAIL = 1
@@ -182,10 +182,68 @@ def standard_output() -> TextIO:
     full disk or a broken pipe, not as a bug (hunt43's F1)."""
     stream = sys.stdout
     if stream is None:
-        import errno
-
-        raise OSError(errno.EBADF, "standard output is closed")
+        raise _closed_error()
     return stream
+
+
+def output_closed() -> bool:
+    """Whether standard output is closed: ``sys.stdout`` None (the process started without file descriptor 1,
+    ``cmd >&-``) or a closed stream (:func:`closed_output`'s says so too)."""
+    stream = sys.stdout
+    return stream is None or bool(getattr(stream, "closed", False))
+
+
+def closed_output() -> Any:
+    """What ``sys.stdout`` is while a command runs with standard output closed (``nczones.cli`` puts it there): a
+    stream whose writing, flushing or bytes raise the :class:`OSError` that :func:`report_failure` tells as
+    "cannot read or write: standard output is closed", exit 2.  Without it, ``print()`` with ``sys.stdout`` None
+    writes nothing and the command would exit 0 with its output lost (mend44).  A line that only tells about a
+    file the command wrote goes through :func:`tell_beside_file`, which leaves it out instead.  (The class is
+    made here, when standard output is closed: not at every start, issue 36.)
+
+    >>> closed_output().write("report")
+    Traceback (most recent call last):
+    OSError: [Errno 9] standard output is closed
+    """
+
+    class ClosedOutput:
+        __slots__ = ()
+        closed = True
+
+        def write(self, text: str) -> int:
+            raise _closed_error()
+
+        def writelines(self, lines: object) -> None:
+            raise _closed_error()
+
+        def flush(self) -> None:
+            raise _closed_error()
+
+        def fileno(self) -> int:
+            raise _closed_error()
+
+        def isatty(self) -> bool:
+            return False
+
+        @property
+        def buffer(self) -> object:  # (linuxcnc-filter writes the program's bytes there)
+            raise _closed_error()
+
+    return ClosedOutput()
+
+
+def tell_beside_file(text: str) -> None:
+    """Print ``text``, a line about a file the command wrote (``--output``: where it went, each program's
+    summary), unless standard output is closed: then the file is the whole of the command's output, and the
+    command succeeds without the line (as ``verify --output``, hunt43's F1)."""
+    if not output_closed():
+        print(text)
+
+
+def _closed_error() -> OSError:
+    import errno
+
+    return OSError(errno.EBADF, "standard output is closed")
 
 
 def _quiet_stdout(exc: OSError) -> None:

@@ -18,7 +18,7 @@ from ..errors import Diagnostic, InputError, InvalidArgument
 from ..imports import KINDS, ImportResult, import_machine
 from ..imports.export import EXPORT_KINDS
 from ..imports.render import KIND_LABELS
-from .conventions import EXIT_FAIL, EXIT_OK
+from .conventions import EXIT_FAIL, EXIT_OK, tell_beside_file
 
 __all__ = ["configure_import", "configure_export", "summary"]
 
@@ -47,17 +47,18 @@ def summary(result: ImportResult, output: str | None) -> str:
 
 
 def _emit(text: str, output: str | None, summary_line: str, notes: Iterable[Diagnostic]) -> None:
-    """The file to ``output`` and the report to standard output, or the file to standard output and the
-    report to standard error (so the command can be redirected)."""
+    """The file to ``output`` and the report to standard output (none when it is closed: the file is the
+    output), or the file to standard output and the report to standard error (so the command can be
+    redirected)."""
+    lines = [summary_line, *(note.render() for note in notes)]
     if output:
         _write(output, text)
-        report = sys.stdout
-    else:
-        sys.stdout.write(text)
-        report = sys.stderr
-    print(summary_line, file=report)
-    for note in notes:
-        print(note.render(), file=report)
+        for line in lines:
+            tell_beside_file(line)
+        return
+    sys.stdout.write(text)
+    for line in lines:
+        print(line, file=sys.stderr)
 
 
 def _run_import(args: argparse.Namespace) -> int:
@@ -73,8 +74,8 @@ def _run_import(args: argparse.Namespace) -> int:
         from .linuxcnc_filter import ini_snippet
 
         _write(args.linuxcnc_filter, ini_snippet(args.output, args.source))
-        print(f"{args.linuxcnc_filter}: the [FILTER] and [NCZONES] lines for {args.source} "
-              "(docs/linuxcnc-filter.md)", file=sys.stdout)
+        tell_beside_file(f"{args.linuxcnc_filter}: the [FILTER] and [NCZONES] lines for {args.source} "
+                         "(docs/linuxcnc-filter.md)")
     return EXIT_OK
 
 

@@ -14,7 +14,7 @@ import sys
 from typing import Any
 
 from ..errors import Diagnostic, InputError
-from .conventions import EXIT_OK, budget_seconds, program_source, with_dialect
+from .conventions import EXIT_OK, budget_seconds, program_source, tell_beside_file, with_dialect
 
 __all__ = ["configure"]
 
@@ -87,7 +87,7 @@ def _run(args: argparse.Namespace) -> int:
     finally:
         plt.close(fig)
     verdict = f" ({result.verdict.label}, {len(result.violations)} violating block(s))" if result else ""
-    print(f"{args.output}: plot of {source.name} on {machine.name}{verdict}")
+    tell_beside_file(f"{args.output}: plot of {source.name} on {machine.name}{verdict}")
     return EXIT_OK
 
 

@@ -36,6 +36,7 @@ from .conventions import (
     add_dialect_arguments,
     program_source,
     standard_output,
+    tell_beside_file,
     usage_error,
     with_dialect,
 )
@@ -306,8 +307,8 @@ def print_summaries(results: list, output: str) -> None:
 
     color = _color(sys.stdout)
     for _, _, result in results:
-        print(summary_line(result, result.file or "<program>", color=color))
-    print(f"report written to {output}")
+        tell_beside_file(summary_line(result, result.file or "<program>", color=color))
+    tell_beside_file(f"report written to {output}")
 
 
 def _color(stream: TextIO) -> bool:

@@ -296,7 +296,7 @@ def _keep_last(it: Any, code: tuple[np.ndarray, np.ndarray], lo: int, hi: int) -
             if number is not None:
                 last["N"] = number
             if alone != number:  # the last N is a line's alone (FanucRunner.number_alone)
-                last["N*"] = (alone, last.get("N"))
+                last["N*"] = alone
             else:  # a block's: it settles an alone before it
                 last.pop("N*", None)
 

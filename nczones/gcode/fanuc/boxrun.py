@@ -256,8 +256,10 @@ def read_box_run(runner: Any, text: str, pos: int, lineno: int) -> tuple[int, in
     """Read the plain lines of ``text`` from offset ``pos`` (line ``lineno``) into the box of the interpreter's
     run, as the plain lanes would (module docstring): ``(next offset, next line number, whether the chunk is
     full)``, or None when the first line is not taken (nothing changed)."""
-    if pos and text[pos - 1] != "\n":
-        return None  # (not a line's start: never asked so)
+    if pos and text[pos - 1:pos] != "\n":
+        # not a line's start (never asked so), or past the text's end: after a last line without a newline the
+        # next offset is the text's length + 1, as ``StringSource.line_at`` gives it, and no line is left
+        return None
     st = _start(runner)
     if st is None:
         if runner.state.prog is not None:  # a programmable transform is active

@@ -585,7 +585,7 @@ class FanucInterpreter(Interpreter):
             if block.words:
                 self.keep_number(block.number)
             else:  # a line of its N alone, handed on as a block (FanucRunner.number_alone)
-                self.last["N*"] = (block.number, self.last.get("N"))
+                self.last["N*"] = block.number
         for k in (0, 1):
             if k in mset and len(self.stops) < 100:
                 self.stops.append((k, block.span.line if block.span else 0))

@@ -952,12 +952,12 @@ class FanucRunner:
 
     def number_alone(self, number: Fraction) -> None:
         """A line with an N and no NC word (``N25`` alone, or with macro statements only: no block for this
-        reader), kept beside the last block's N as ``last["N*"] = (its N, the last block's N then)``: whether the
-        control's ``#4114`` then holds it is not settled, so a read where the two readings differ is unknown
-        (:func:`nczones.gcode.fanuc.system.read`)."""
+        reader), kept beside the last block's N as ``last["N*"]`` (until a block's N, :meth:`lane_number`,
+        ``Interpreter.keep_number``): whether the control's ``#4114`` then holds it is not settled, so a read where
+        the two readings differ is unknown (:func:`nczones.gcode.fanuc.system.read`)."""
         last = getattr(self.state, "last", None)
         if last is not None:
-            last["N*"] = (number, last.get("N"))
+            last["N*"] = number
 
     def lane_number(self, number: Fraction) -> None:
         """The N of a block the plain-move lane took, kept as the general path's ``_record_block`` keeps it: the

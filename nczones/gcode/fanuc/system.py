@@ -161,12 +161,13 @@ def _last(it: MacroState, n: int, letter: str) -> tuple:
 def _alone(it: MacroState, n: int, last: Fraction | None) -> None:
     """Unknown when ``#n`` (the last N) differs as a line with an N and no NC word counts or not: such a line
     (``N25`` alone, a macro statement's label) is no block for this reader, and whether the control's last
-    sequence number then holds its N is not settled (``FanucRunner.number_alone`` keeps ``last["N*"]``: its N and
-    the block's N then; a later block's N settles it, ``Interpreter.keep_number`` drops the entry)."""
+    sequence number then holds its N is not settled (``FanucRunner.number_alone`` keeps its N in ``last["N*"]``;
+    a later block's N settles it: every setter of ``last["N"]`` drops the entry, ``Interpreter.keep_number``, so
+    while it is there ``last`` is still the block's N of its time)."""
     alone = it.last.get("N*")
-    if alone is not None and alone[1] == last and alone[0] != last:
-        raise _unknown(n, f"#{n} after N{alone[0]} on a line without an NC word (a sequence number alone or a "
-                       f"macro statement's): whether the control's last sequence number is then {alone[0]} or "
+    if alone is not None and alone != last:
+        raise _unknown(n, f"#{n} after N{alone} on a line without an NC word (a sequence number alone or a "
+                       f"macro statement's): whether the control's last sequence number is then {alone} or "
                        "the last block's is not settled; write the N in a block with an NC word")
 
 
