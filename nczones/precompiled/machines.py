@@ -15,26 +15,12 @@ def box_machine(name: str, limit: str, settings: Sequence[str] = (), sections: S
     box of ``-limit`` to ``limit`` mm on every axis; ``settings``: more lines of its ``[machine]`` table,
     ``sections``: tables before the zone (more zones go after the text).
 
-    >>> print(box_machine("m", "5", ['pulse = "0.001"'], ["[tool_lengths]", 'H1 = "100"'], rapid="60"), end="")
-    [machine]
-    name = "m"
-    axes = ["X", "Y", "Z"]
-    pulse = "0.001"
-    [machine.rapid]
-    X = "60"
-    Y = "60"
-    Z = "60"
-    [machine.reference]
-    X = "0"
-    Y = "0"
-    Z = "0"
-    [tool_lengths]
-    H1 = "100"
-    [[zones]]
-    name = "travel"
-    kind = "box"
-    min = { X = "-5", Y = "-5", Z = "-5" }
-    max = { X = "5", Y = "5", Z = "5" }
+    >>> text = box_machine("m", "5", ['pulse = "0.001"'], ["[tool_lengths]", 'H1 = "100"'], rapid="60")
+    >>> lines = text.splitlines()
+    >>> lines[:4]
+    ['[machine]', 'name = "m"', 'axes = ["X", "Y", "Z"]', 'pulse = "0.001"']
+    >>> lines[5], lines[12:15], lines[-1]
+    ('X = "60"', ['[tool_lengths]', 'H1 = "100"', '[[zones]]'], 'max = { X = "5", Y = "5", Z = "5" }')
     """
     lines = ["[machine]", f'name = "{name}"', 'axes = ["X", "Y", "Z"]', *settings,
              "[machine.rapid]", *(f'{a} = "{rapid}"' for a in "XYZ"),
