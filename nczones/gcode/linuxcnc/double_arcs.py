@@ -405,6 +405,7 @@ _QUADRANT = (0, 3, 1, 2)
 _CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
                  for q in range(4))
 _SWEEPS: tuple[tuple[bool, bool, bool, bool, bool], ...] | None = None
+_next_after = math.nextafter  # (a global: one lookup less a call than math.nextafter)
 
 
 def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: float, uy: float, wx: float,
@@ -446,8 +447,8 @@ def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: f
         yhi = cy + rmax
     if ny and cy - rmax < ylo:
         ylo = cy - rmax
-    return (math.nextafter(xlo - widen, _DOWN), math.nextafter(xhi + widen, _UP),
-            math.nextafter(ylo - widen, _DOWN), math.nextafter(yhi + widen, _UP))
+    return (_next_after(xlo - widen, _DOWN), _next_after(xhi + widen, _UP), _next_after(ylo - widen, _DOWN),
+            _next_after(yhi + widen, _UP))
 
 
 def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
