@@ -37,7 +37,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from _bench import ROOT, machine_description  # noqa: E402
-from bench_peers import BOX, cpu_of  # noqa: E402
+from bench_peers import cpu_of  # noqa: E402
+
+from nczones.precompiled.machines import peer_box  # noqa: E402
 
 SPLIT = r"""
 import json, sys, time
@@ -110,7 +112,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         machine = d / "box.toml"
-        machine.write_text(BOX.format(dialect="linuxcnc"))
+        machine.write_text(peer_box("linuxcnc"))
         tiny = d / "tiny.ngc"
         tiny.write_text("G1 X1 F100\nM2\n")
         rows = [(f"an expression on every line, {a.lines:,}", bench_gcode.expr_program(a.lines)),

@@ -33,26 +33,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from nczones.controller import Settings, simulate  # noqa: E402
 from nczones.machine import parse_machine  # noqa: E402
 from nczones.motion import Plane, Segment, SegmentKind  # noqa: E402
+from nczones.precompiled.machines import box_machine  # noqa: E402
 
-MACHINE = parse_machine("""
-[machine]
-name = "bench"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-monitor_period_ms = "2"
-[machine.rapid]
-X = "60000"
-Y = "60000"
-Z = "60000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-5000", Y = "-5000", Z = "-5000" }
-max = { X = "5000", Y = "5000", Z = "5000" }
+MACHINE = parse_machine(box_machine("bench", "5000", ['pulse = "0.001"', 'monitor_period_ms = "2"'], rapid="60000") + """
 [[zones]]
 name = "table"
 kind = "stepped"

@@ -73,30 +73,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from _bench import ROOT, STELLABEE, machine_description  # noqa: E402
 
-CORPUS = Path("/work/shared/corpus")
+from nczones.precompiled.machines import peer_box  # noqa: E402
 
-BOX = """
-[machine]
-name = "peer bench"
-axes = ["X", "Y", "Z"]
-pulse = "0.0001"
-dialect = "{dialect}"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[tool_lengths]
-H1 = "100"
-[[zones]]
-name = "travel"
-kind = "box"
-min = {{ X = "-100000", Y = "-100000", Z = "-100000" }}
-max = {{ X = "100000", Y = "100000", Z = "100000" }}
-"""
+CORPUS = Path("/work/shared/corpus")
 
 REGEX_PASS = r"""
 import re, sys
@@ -329,7 +308,7 @@ def start_up(nczones: list[str], env: dict, d: Path) -> dict[str, Path]:
     machines = {}
     for dialect, text in (("linuxcnc", "G0 X1 Y1\nG1 X2 F100\nM30\n"), ("fanuc", "G0 X1. Y1.\nG1 X2. F100.\nM30\n")):
         machines[dialect] = machine = d / f"box-{dialect}.toml"
-        machine.write_text(BOX.format(dialect=dialect))
+        machine.write_text(peer_box(dialect))
         program = d / f"three-{dialect}.nc"
         program.write_text(text)
         cmd = [*nczones, "verify", str(program), "--machine", str(machine), "--format", "json"]
@@ -390,7 +369,7 @@ def scaling(sizes: list[int], repeat: int, env: dict, only: str = "") -> None:
                 continue
             machine = d / f"box_{dialect}.toml"
             # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
-            machine.write_text(BOX.format(dialect=dialect).replace('100000"', '900000"'))
+            machine.write_text(peer_box(dialect, "900000"))
             warm = d / "warm.nc"  # the machine file's cache entry: every size is a user's second run
             warm.write_text("G0 X1. Y1.\nM30\n")
             subprocess.run([sys.executable, "-m", "nczones", "verify", str(warm), "--machine", str(machine)], env=env,

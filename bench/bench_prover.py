@@ -30,25 +30,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from _bench import STELLABEE, Clock, emit, machine_description, peak_rss_mib, run_case  # noqa: E402
 
-BOX_MACHINE = """
-[machine]
-name = "bench mill"
-axes = ["X", "Y", "Z"]
-rapid_mode = "linear"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-500", Y = "-500", Z = "-500" }
-max = { X = "500", Y = "500", Z = "500" }
-"""
+from nczones.precompiled.machines import box_machine  # noqa: E402
+
+BOX_MACHINE = box_machine("bench mill", "500", ['rapid_mode = "linear"'])
 
 
 def table_machine(regions: int = 256) -> str:

@@ -14,6 +14,7 @@ import sys
 from pathlib import Path
 
 from . import RECORD_ENV, RECORD_PATTERNS_ENV
+from .machines import peer_box
 
 PACKAGE = Path(__file__).resolve().parents[1]
 TARGET = Path(__file__).resolve().parent / "functions.py"
@@ -72,27 +73,6 @@ SCENARIOS = (
     ["verify", "--help"],
 )
 
-#: A Fanuc machine whose zones are boxes (the Fanuc box reader, ``gcode.fanuc.boxrun``, runs on such a machine).
-_BOX_FANUC = """[machine]
-name = "box"
-axes = ["X", "Y", "Z"]
-pulse = "0.001"
-dialect = "fanuc"
-[machine.rapid]
-X = "10000"
-Y = "10000"
-Z = "10000"
-[machine.reference]
-X = "0"
-Y = "0"
-Z = "0"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-1000", Y = "-1000", Z = "-1000" }
-max = { X = "1000", Y = "1000", Z = "1000" }
-"""
-
 _RUN = """import contextlib, io, sys, json
 from nczones.cli import main
 for argv in json.loads(sys.argv[1]):
@@ -120,7 +100,8 @@ def start_ups() -> tuple[list[tuple[str, str, int]], set[str]]:
         Path(d, "tiny.nc").write_text("G21 G90\nG0 X1. Y1.\nG1 X2. Y2. F100.\nM30\n", encoding="utf-8")
         # a program between % lines with its O number on a machine of boxes: the Fanuc box reader's patterns (boxrun)
         Path(d, "tape.nc").write_text("%\nO0001\nG21 G90 G54\nG01 X1. Y1. F100.\nM30\n%\n", encoding="utf-8")
-        Path(d, "box_fanuc.toml").write_text(_BOX_FANUC, encoding="utf-8")  # box zones only: the box reader runs
+        # the peer benchmarks' Fanuc machine: box zones only, so the box reader runs
+        Path(d, "box_fanuc.toml").write_text(peer_box("fanuc"), encoding="utf-8")
         found = set()
         made: set[str] = set()
         for argv in SCENARIOS:

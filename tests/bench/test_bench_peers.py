@@ -1,4 +1,5 @@
-"""bench/bench_peers.py's timing rounds: a row's commands interleaved, the least run of the common exit status."""
+"""bench/bench_peers.py: its timing rounds (a row's commands interleaved, the least run of the common exit status); its
+machine, the package's peer box."""
 
 from __future__ import annotations
 
@@ -49,3 +50,20 @@ def test_cpu_of_is_one_command_in_rounds(tmp_path, monkeypatch, repeat):
     cpu, code = bench_peers.cpu_of(_logger(log, "o", 3), 60)
     assert code == 3 and cpu is not None and log.read_text() == "o" * repeat
     assert bench_peers.LAST_RSS[0] is not None and bench_peers.LAST_RSS[0] > 0
+
+
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+def test_the_peer_box_is_the_package_s_box_machine(dialect):
+    """bench_peers writes ``nczones.precompiled.machines.peer_box`` (dup44: one description, also the Fanuc
+    machine of the start-up recordings): the dialect's mill with H1 and one zone, a box, so the Fanuc box reader
+    runs on it; ``--scaling`` widens the box."""
+    from nczones.machine import parse_machine
+    from nczones.precompiled import machines
+    from nczones.zones import BoxZone
+
+    assert bench_peers.peer_box is machines.peer_box
+    machine = parse_machine(machines.peer_box(dialect))
+    assert machine.dialect == dialect and machine.axis_names == ("X", "Y", "Z") and dict(machine.tool_lengths) == {1: 100}
+    assert [type(z) for z in machine.zones] == [BoxZone]
+    wide = parse_machine(machines.peer_box(dialect, "900000")).zones[0]
+    assert wide.contains({"X": 899999, "Y": 0, "Z": 0}) and not machine.zones[0].contains({"X": 899999, "Y": 0, "Z": 0})

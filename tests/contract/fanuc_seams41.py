@@ -26,6 +26,7 @@ Oracles (:func:`lanes_agree`, :func:`verdicts_agree`, :func:`reference_agrees`):
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 from fractions import Fraction
 
@@ -209,17 +210,24 @@ def fanuc_programs(draw) -> tuple[str, str]:
     :func:`program` joins them, with or without the :data:`READS` read into moves before the M30.  A quarter of
     them are plain: no ``#`` (no macro line, G65 call nor read; sub O2000 without one)."""
     inch = draw(st.integers(0, 3)) == 0
-    d = _Draw(draw, inch, plain=draw(st.integers(0, 3)) == 0)
+    return parts(_Draw(draw, inch, plain=draw(st.integers(0, 3)) == 0), _statement, 7)
+
+
+def parts(d: _Draw, statement: Callable[[_Draw], list[str]], most: int, tail: Sequence[str] = ()) -> tuple[str, str]:
+    """A program's two parts (:func:`fanuc_programs`) drawn with ``d``: the header, 1 to ``most`` of
+    ``statement``'s statements and ``tail``; the end (M30, O1000, O2000; O2000 without ``#`` when ``d.plain``).
+    hunt42's and hunt43's generators (:mod:`tests.contract.fanuc_seams42`, ``fanuc_seams43``) draw theirs here."""
+    draw, inch = d.draw, d.inch
     head = ["O0001", f"G17 G40 G80 {'G20' if inch else 'G21'} G90 {draw(st.sampled_from(('G54', 'G55')))} F300.",
             "G00 Z20." if not inch else "G00 Z0.8", "M08" if d.plain else f"#1 = {_num(draw, -5, 5, 1)}"]
     body: list[str] = []
-    for _ in range(draw(st.integers(1, 7))):
-        body += _statement(d)
+    for _ in range(draw(st.integers(1, most))):
+        body += statement(d)
     sub1 = ["O1000", "G91 G01 X1. Y-1.", "G90", "N900 G81 X5. Y5. Z-10. R2. F100.", "X6.", "G80", "M99"]
     sub2 = ["O2000", "G01 X[#1 * 2.] Y[#2 + #4114 * 0.001]", "#5 = #5001", "G01 X[#5 + 1.]", "M99"]
     if d.plain:
         sub2 = ["O2000", "G01 X2. Y3.", "M99"]
-    return "\n".join(head + body) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
+    return "\n".join([*head, *body, *tail]) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
 
 
 def program(parts: tuple[str, str], reads: bool = True) -> str:

@@ -181,17 +181,7 @@ def _statement(d: _Draw) -> list[str]:
 def fanuc_programs42(draw) -> tuple[str, str]:
     """hunt41's program parts with :func:`_statement`'s transforms and arcs among the statements."""
     inch = draw(st.integers(0, 3)) == 0
-    d = _Draw(draw, inch, plain=draw(st.integers(0, 3)) == 0)
-    head = ["O0001", f"G17 G40 G80 {'G20' if inch else 'G21'} G90 {draw(st.sampled_from(('G54', 'G55')))} F300.",
-            "G00 Z20." if not inch else "G00 Z0.8", "M08" if d.plain else f"#1 = {_num(draw, -5, 5, 1)}"]
-    body: list[str] = []
-    for _ in range(draw(st.integers(1, 5))):
-        body += _statement(d)
-    sub1 = ["O1000", "G91 G01 X1. Y-1.", "G90", "N900 G81 X5. Y5. Z-10. R2. F100.", "X6.", "G80", "M99"]
-    sub2 = ["O2000", "G01 X[#1 * 2.] Y[#2 + #4114 * 0.001]", "#5 = #5001", "G01 X[#5 + 1.]", "M99"]
-    if d.plain:
-        sub2 = ["O2000", "G01 X2. Y3.", "M99"]
-    return "\n".join(head + body + ["G69 G50 G50.1 G90"]) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
+    return s41.parts(_Draw(draw, inch, plain=draw(st.integers(0, 3)) == 0), _statement, 5, ["G69 G50 G50.1 G90"])
 
 
 # ---------------------------------------------------------------------------------------------- oracle 2b

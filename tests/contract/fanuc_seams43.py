@@ -124,14 +124,4 @@ def fanuc_programs43(draw) -> tuple[str, str]:
     """hunt42's program parts with :func:`rotated43` statements among them."""
     inch = draw(st.integers(0, 5)) == 0
     # half of them plain (no ``#``: the box route's run reader reads only such a text)
-    d = _Draw(draw, inch, plain=draw(st.booleans()))
-    head = ["O0001", f"G17 G40 G80 {'G20' if inch else 'G21'} G90 {draw(st.sampled_from(('G54', 'G55')))} F300.",
-            "G00 Z20." if not inch else "G00 Z0.8", "M08" if d.plain else f"#1 = {_num(draw, -5, 5, 1)}"]
-    body: list[str] = []
-    for _ in range(draw(st.integers(1, 3))):
-        body += _statement(d)
-    sub1 = ["O1000", "G91 G01 X1. Y-1.", "G90", "N900 G81 X5. Y5. Z-10. R2. F100.", "X6.", "G80", "M99"]
-    sub2 = ["O2000", "G01 X[#1 * 2.] Y[#2 + #4114 * 0.001]", "#5 = #5001", "G01 X[#5 + 1.]", "M99"]
-    if d.plain:
-        sub2 = ["O2000", "G01 X2. Y3.", "M99"]
-    return "\n".join(head + body + ["G69 G50 G50.1 G90"]) + "\n", "\n".join(["M30"] + sub1 + sub2) + "\n"
+    return s41.parts(_Draw(draw, inch, plain=draw(st.booleans())), _statement, 3, ["G69 G50 G50.1 G90"])

@@ -208,6 +208,20 @@ def seam41_programs(draw, lathe: bool = False, one_unit: bool = False, comp: boo
     return "\n".join(lines) + "\n"
 
 
+@st.composite
+def programs_with(draw, statement, one_unit: bool = False, comp: bool = False) -> str:
+    """hunt41's mill programs (:func:`seam41_programs`) whose statements ``statement(draw, st_, depth, counter)``
+    draws (falling back to hunt41's own as it likes): the loops and ifs here draw their bodies through the
+    module's name ``_statement``, set to it for the draw.  hunt42's and hunt43's generators draw theirs here."""
+    global _statement
+    base = _statement
+    _statement = statement
+    try:
+        return draw(seam41_programs(one_unit=one_unit, comp=comp))
+    finally:
+        _statement = base
+
+
 def _check(data, lathe: bool = False, one_unit: bool = False, units: str = "G21") -> None:
     draw = data.draw
     comp = not lathe and not one_unit and draw(st.booleans())

@@ -23,21 +23,17 @@ import math
 import os
 from fractions import Fraction
 
-import pytest
-from hypothesis import event, given, settings
+from hypothesis import event
 from hypothesis import strategies as st
 
 from tests.contract import test_double_pass_seams41 as s41
+from tests.contract.mill_seams import check_rs274_drawn, mill_case, seam_tests
 from tests.contract.test_double_pass_seams40 import (
-    _SETTINGS,
     _UNITS,
     PLANES,
-    _mill,
     _q,
-    check_rs274,
     check_seams,
 )
-from tests.gcode.rs274_pass import NEEDS_RS274
 
 CI_EXAMPLES = 3
 LONG_EXAMPLES = int(os.environ.get("NCZONES_SEAMS42", "300"))
@@ -164,65 +160,21 @@ def _statement(draw, st_: s41._State41, depth: int, counter: str | None) -> list
 _base = s41._statement
 
 
-@st.composite
-def seam42_programs(draw, one_unit: bool = False, comp: bool = False) -> str:
+def seam42_programs(one_unit: bool = False, comp: bool = False) -> st.SearchStrategy[str]:
     """hunt41's mill programs with :func:`_statement`'s statements among theirs."""
-    s41._statement = _statement  # hunt41's loops and ifs draw their bodies through the module's name
-    try:
-        return draw(s41.seam41_programs(one_unit=one_unit, comp=comp))
-    finally:
-        s41._statement = _base
+    return s41.programs_with(_statement, one_unit=one_unit, comp=comp)
 
 
 def check_any(data, units: str | None = None) -> None:
     """Relations 1-3 on a drawn mill program (compensated half the time, one unit a quarter of the time)."""
-    draw = data.draw
-    one_unit = draw(st.integers(0, 3)) == 0
-    units = units or draw(st.sampled_from(("G20", "G21")))
-    comp = not one_unit and draw(st.booleans())
-    template = draw(seam42_programs(one_unit=one_unit, comp=comp))
-    values = _mill(draw, template)
-    if comp:
-        modal = [g for g in values.get("machine.modal", ()) if g not in ("G20", "G91")]
-        values = {**values, "machine.cutter_compensation": "linuxcnc", "machine.modal": modal}
-    event(check_seams(template, "xyz_range_seams", values, draw, units))
+    template, values, units = mill_case(data, seam42_programs, units)
+    event(check_seams(template, "xyz_range_seams", values, data.draw, units))
 
 
 def check_rs274_any(data, workdir) -> None:
-    """Relation 4 on a drawn program without compensation; one with a motion below the resolution of rs274's log
-    (``(tiny)``: ``tests.oracles.rs274.compare`` drops rs274's moves that do not move in the log, the full path's
-    stay: hunt42's H3) is counted, not compared."""
-    units = data.draw(st.sampled_from(("G20", "G21")))
-    template = data.draw(seam42_programs(one_unit=data.draw(st.booleans())))
-    if "(tiny)" in template:
-        event("rs274's own (a motion below its log's resolution)")
-        return
-    event(check_rs274(template, units, workdir))
+    """Relation 4 on a drawn program without compensation (``mill_seams.check_rs274_drawn``)."""
+    check_rs274_drawn(data, workdir, seam42_programs)
 
 
-@settings(max_examples=CI_EXAMPLES, derandomize=True, **_SETTINGS)
-@given(st.data())
-def test_mill_seams42_agree_with_the_full_path(data):
-    check_any(data)
-
-
-@NEEDS_RS274
-@settings(max_examples=CI_EXAMPLES - 1, derandomize=True, **_SETTINGS)
-@given(st.data())
-def test_the_pass_is_rs274s_motion_at_the_seams42(tmp_path_factory, data):
-    check_rs274_any(data, tmp_path_factory.mktemp("rs274"))
-
-
-@pytest.mark.long
-@settings(max_examples=LONG_EXAMPLES, **_SETTINGS)
-@given(st.data())
-def test_seams42_long(data):
-    check_any(data)
-
-
-@pytest.mark.long
-@NEEDS_RS274
-@settings(max_examples=LONG_EXAMPLES, **_SETTINGS)
-@given(st.data())
-def test_rs274_seams42_long(tmp_path_factory, data):
-    check_rs274_any(data, tmp_path_factory.mktemp("rs274"))
+(test_mill_seams42_agree_with_the_full_path, test_the_pass_is_rs274s_motion_at_the_seams42, test_seams42_long,
+ test_rs274_seams42_long) = seam_tests(check_any, check_rs274_any, CI_EXAMPLES, LONG_EXAMPLES)

@@ -32,20 +32,17 @@ import re
 from fractions import Fraction
 
 import pytest
-from hypothesis import event, given, settings
+from hypothesis import event
 from hypothesis import strategies as st
 
 from tests.contract import test_double_pass_seams40 as s40
 from tests.contract import test_double_pass_seams41 as s41
 from tests.contract import test_double_pass_seams42 as s42
+from tests.contract.mill_seams import check_rs274_drawn, mill_case, seam_tests
 from tests.contract.test_double_pass_seams40 import (
-    _SETTINGS,
     PLANES,
-    _mill,
-    check_rs274,
     check_seams,
 )
-from tests.gcode.rs274_pass import NEEDS_RS274
 
 CI_EXAMPLES = 3
 LONG_EXAMPLES = int(os.environ.get("NCZONES_SEAMS43", "300"))
@@ -197,25 +194,13 @@ def _mangle(draw, template: str) -> str:
 def seam43_programs(draw, one_unit: bool = False, comp: bool = False) -> str:
     """hunt42's mill programs with :func:`_statement`'s statements among theirs, mangled (:func:`_mangle`) half
     the time."""
-    s41._statement = _statement  # hunt41's loops and ifs draw their bodies through the module's name
-    try:
-        template = draw(s41.seam41_programs(one_unit=one_unit, comp=comp))
-    finally:
-        s41._statement = s42._base
+    template = draw(s41.programs_with(_statement, one_unit=one_unit, comp=comp))
     return _mangle(draw, template) if draw(st.booleans()) else template
 
 
 def check_any(data, units: str | None = None) -> None:
     """Relations 1-3 on a drawn mill program (compensated half the time, one unit a quarter of the time)."""
-    draw = data.draw
-    one_unit = draw(st.integers(0, 3)) == 0
-    units = units or draw(st.sampled_from(("G20", "G21")))
-    comp = not one_unit and draw(st.booleans())
-    template = draw(seam43_programs(one_unit=one_unit, comp=comp))
-    values = _mill(draw, template)
-    if comp:
-        modal = [g for g in values.get("machine.modal", ()) if g not in ("G20", "G91")]
-        values = {**values, "machine.cutter_compensation": "linuxcnc", "machine.modal": modal}
+    template, values, units = mill_case(data, seam43_programs, units)
     seen: list[str] = []
     inner = s40._run
 
@@ -226,7 +211,7 @@ def check_any(data, units: str | None = None) -> None:
 
     s40._run = run
     try:
-        event(check_seams(template, "xyz_range_seams", values, draw, units))
+        event(check_seams(template, "xyz_range_seams", values, data.draw, units))
     except AssertionError as exc:
         # relations 1 and 3 compare verdicts: a solver stopped by its wall-clock backstop (hunt43's H2: a face
         # within 1e-30 mm of an R arc's irrational extreme, on a loaded machine) is counted, not failed
@@ -239,40 +224,11 @@ def check_any(data, units: str | None = None) -> None:
 
 def check_rs274_any(data, workdir) -> None:
     """Relation 4 on a drawn program without compensation (hunt42's ``(tiny)`` programs counted, not compared)."""
-    units = data.draw(st.sampled_from(("G20", "G21")))
-    template = data.draw(seam43_programs(one_unit=data.draw(st.booleans())))
-    if "(tiny)" in template:
-        event("rs274's own (a motion below its log's resolution)")
-        return
-    event(check_rs274(template, units, workdir))
+    check_rs274_drawn(data, workdir, seam43_programs)
 
 
-@settings(max_examples=CI_EXAMPLES, derandomize=True, **_SETTINGS)
-@given(st.data())
-def test_mill_seams43_agree_with_the_full_path(data):
-    check_any(data)
-
-
-@NEEDS_RS274
-@settings(max_examples=CI_EXAMPLES - 1, derandomize=True, **_SETTINGS)
-@given(st.data())
-def test_the_pass_is_rs274s_motion_at_the_seams43(tmp_path_factory, data):
-    check_rs274_any(data, tmp_path_factory.mktemp("rs274"))
-
-
-@pytest.mark.long
-@settings(max_examples=LONG_EXAMPLES, **_SETTINGS)
-@given(st.data())
-def test_seams43_long(data):
-    check_any(data)
-
-
-@pytest.mark.long
-@NEEDS_RS274
-@settings(max_examples=LONG_EXAMPLES, **_SETTINGS)
-@given(st.data())
-def test_rs274_seams43_long(tmp_path_factory, data):
-    check_rs274_any(data, tmp_path_factory.mktemp("rs274"))
+(test_mill_seams43_agree_with_the_full_path, test_the_pass_is_rs274s_motion_at_the_seams43, test_seams43_long,
+ test_rs274_seams43_long) = seam_tests(check_any, check_rs274_any, CI_EXAMPLES, LONG_EXAMPLES)
 
 
 #: compensated arcs whose ends lie in one quadrant of the centre: a sweep of nearly a full turn (G2 from (4, 3)

@@ -1,10 +1,11 @@
 """comp42: the compensated moves' quicker code in the double pass (nczones/gcode/linuxcnc/double_comp.py).
 
-``corner_box`` is ``double_arcs._box`` in one function, its directions the union over the quadrants the exact
-vectors may lie in (no angles for an end on the centre's axis): where no component is within ``err`` of 0 it is
-``_box``'s box bit for bit; near an axis, with the exact vectors anywhere within ``err / 2`` of the doubles, it
-holds the exact arc's extremes (an exact reference: pseudo-angles in Fractions), a sweep of about a whole turn
-included.  ``Comp.line`` (a move naming only the plane's axes) gives the rows ``Comp.straight`` gives.
+``corner_box`` is ``double_arcs.sector_box`` (the box of every arc of the pass, dup44: one function) with
+``ij_check``'s ``err``: the box of an I/J arc about the same centre is the corner arc's bit for bit.  Its
+directions are the union over the quadrants the exact vectors may lie in (no angles for an end on the centre's
+axis): near an axis, with the exact vectors anywhere within ``err / 2`` of the doubles, it holds the exact arc's
+extremes (an exact reference: pseudo-angles in Fractions), a sweep of about a whole turn included.
+``Comp.line`` (a move naming only the plane's axes) gives the rows ``Comp.straight`` gives.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nczones.gcode.linuxcnc import double_comp
-from nczones.gcode.linuxcnc.double_arcs import sector_box
+from nczones.gcode.linuxcnc.double_arcs import ij_arc
 from nczones.gcode.linuxcnc.double_comp import corner_box
 from nczones.gcode.linuxcnc.doubles import double_pass
 from tests.machines import load_machine
@@ -29,15 +30,6 @@ def _err(sx, sy, ex, ey, cx, cy, offb):
     """``corner_box``'s ``err`` (the bound of the exact ``u``, ``w`` per component: the module's docstring)."""
     r0, r1 = math.hypot(sx - cx, sy - cy), math.hypot(ex - cx, ey - cy)
     return (64.0 * (abs(sx) + abs(sy) + r0 + r1 + offb) + 0.0625) * _U
-
-
-def _former(sx, sy, ex, ey, cx, cy, cw, offb):
-    """comp41's ``corner_box``: ``double_arcs._box`` (``sector_box``) with the same ``err``."""
-    ux, uy, wx, wy = sx - cx, sy - cy, ex - cx, ey - cy
-    r0, r1 = math.hypot(ux, uy), math.hypot(wx, wy)
-    err = _err(sx, sy, ex, ey, cx, cy, offb)
-    diff, big = (r1 - r0, r1) if r1 > r0 else (r0 - r1, r0)
-    return sector_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, big, diff + err, err, cw)
 
 
 def _pseudo(x: Fraction, y: Fraction) -> Fraction:
@@ -62,17 +54,33 @@ angles = st.one_of(st.sampled_from([0.0, math.pi / 2, math.pi, -math.pi / 2]),
                    st.floats(-math.pi, math.pi))
 
 
+#: directions with rational components ``(a / c, b / c)``: the axes', 3-4-5's and 5-12-13's
+units = st.sampled_from([(1, 0, 1), (0, 1, 1), (-1, 0, 1), (0, -1, 1), (3, 4, 5), (-4, 3, 5), (-3, -4, 5), (4, -3, 5),
+                         (5, 12, 13), (-12, -5, 13)])
+
+
 @settings(max_examples=400, deadline=None)
-@given(centres, centres, radii, angles, angles, st.booleans())
-def test_the_box_is_the_former_one_away_from_the_axes(cx, cy, r, a0, a1, cw):
-    sx, sy, ex, ey = cx + r * math.cos(a0), cy + r * math.sin(a0), cx + r * math.cos(a1), cy + r * math.sin(a1)
-    err = _err(sx, sy, ex, ey, cx, cy, 150.0)
-    new = corner_box(sx, sy, ex, ey, cx, cy, cw, 150.0)
-    old = _former(sx, sy, ex, ey, cx, cy, cw, 150.0)
-    if min(abs(v) for v in (sx - cx, sy - cy, ex - cx, ey - cy)) > err:
-        assert new == old
-    else:  # near an axis: as tight as the former box's (the same here, or within the widening)
-        assert all(abs(n - o) <= 4 * err for n, o in zip(new, old)), (new, old)
+@given(st.integers(-2400, 2400), st.integers(-2400, 2400), st.integers(1, 64), units, units, st.booleans(),
+       st.sampled_from([0.0, 1e-4, -1e-4, 2.0**-40]), st.none() | angles, st.integers(-64, 64))
+def test_a_corner_arc_s_box_is_the_ij_arc_s(cx8, cy8, r8, u0, u1, cw, spiral, a1, nudge):
+    """Both call sites of the one box function: ``corner_box`` (double_comp) and ``ij_arc`` (double_arcs:
+    ``ij_check``, then ``sector_box``) give one box for one arc: ends on the centre's axes (where comp41's
+    ``_box`` took its directions by angles, ``corner_box`` by quadrants), in one quadrant, anywhere (``a1``), the
+    end ``spiral`` off the circle, the start ``nudge`` 2**-40 off it (within about ``err`` of an axis: where the
+    angles and the quadrants took other directions).  The start and the centre are exact (eighths, plus the
+    nudge: ``S + (I, J)`` exact, as ``S - C``), so both compute the same ``u``, ``w``, radii and ``err``."""
+    cx, cy = cx8 / 8, cy8 / 8
+    sx = cx + r8 * (65 // u0[2]) * u0[0] / 8 + nudge * 2.0**-40  # radius 65 r8 / 8
+    sy = cy + r8 * (65 // u0[2]) * u0[1] / 8 - nudge * 2.0**-40
+    r = r8 * 65 / 8 * (1 + spiral)
+    ex, ey = ((cx + r * u1[0] / u1[2], cy + r * u1[1] / u1[2]) if a1 is None else
+              (cx + r * math.cos(a1), cy + r * math.sin(a1)))
+    i, j = cx - sx, cy - sy
+    assert sx + i == cx and sy + j == cy
+    arc = ij_arc(sx, sy, ex, ey, i, j, cw, 150.0, -1.0)
+    if arc.__class__ is str:  # declined by ij_check (an end on the start's ray, the tolerance): no box to compare
+        return
+    assert arc == corner_box(sx, sy, ex, ey, cx, cy, cw, 150.0), (sx, sy, ex, ey, cx, cy, cw)
 
 
 @settings(max_examples=400, deadline=None)

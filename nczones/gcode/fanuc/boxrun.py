@@ -43,7 +43,7 @@ import re
 from fractions import Fraction
 
 from ...motion import PLANE_AXES, SegmentKind
-from .columns import SCALE, BoxRows, BoxSink, centre_arc_box, r_arc_box
+from .columns import SCALE, BoxRows, BoxSink, centre_arc_box, r_arc_box, widen_plane
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -528,7 +528,7 @@ def _lines(st: _Run, keys: list[str], dotless: list[str], pos: int, lineno: int,
             # |dy| <= |R| and not both 0 gives 0 < l2 <= 2 R**2): the box stays as it is (module docstring)
             if not (la >= lo[ia] and ua <= hi[ia] and lb >= lo[ib] and ub <= hi[ib] and (
                     (adx <= ar and ady <= ar and (adx or ady)) or 0 < adx * adx + ady * ady <= 3 * ar * ar)) \
-                    and not _widen(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
+                    and not widen_plane(lo, hi, ia, ib, r_arc_box(sa, sb, ea, eb, rv, mo == 20)):
                 break
             p[ia], p[ib] = ea, eb
         elif arc is None or fv == 0 or not arc_ok or not _arc(st, line, arc, mo == 20):
@@ -557,23 +557,6 @@ def _ended(st: _Run, keys: list[str], first: int, i: int, blanks: int, pos: int,
             at -= len(keys[j]) + 1
         st.last = (at, lineno + j - first)
     return nxt, lineno + i - first, i
-
-
-def _widen(lo: list[int], hi: list[int], ia: int, ib: int, box: tuple[int, int, int, int] | None) -> bool:
-    """The run's box widened in the plane's axes ``ia``, ``ib`` by an arc's ``box`` (``r_arc_box``'s), False when
-    there is none (the interpreter decides the arc)."""
-    if box is None:
-        return False
-    la, ha, lb, hb = box
-    if la < lo[ia]:
-        lo[ia] = la
-    if ha > hi[ia]:
-        hi[ia] = ha
-    if lb < lo[ib]:
-        lo[ib] = lb
-    if hb > hi[ib]:
-        hi[ib] = hb
-    return True
 
 
 def _straight(line: str, words: tuple, p: list[int], lo: list[int], hi: list[int], off: list[int]) -> None:
@@ -619,15 +602,7 @@ def _arc(st: _Run, line: str, arc: tuple, cw: bool) -> bool:
     if helix:
         _straight(line, helix, p, lo, hi, off)
     if box is not _INSIDE:
-        la, ha, lb, hb = box
-        if la < lo[ia]:
-            lo[ia] = la
-        if ha > hi[ia]:
-            hi[ia] = ha
-        if lb < lo[ib]:
-            lo[ib] = lb
-        if hb > hi[ib]:
-            hi[ib] = hb
+        widen_plane(lo, hi, ia, ib, box)
     return True
 
 
@@ -944,13 +919,9 @@ def _xarc(st: _Run, pm: Any, prog: list[int], line: str, arc: tuple, cw: bool) -
     box = centre_arc_box(p[ia], p[ib], moved[ia], moved[ib], centre[ia], centre[ib], cw, 4 * pm.st)
     if box is None:
         return False
-    _widen(lo, hi, ia, ib, box)
+    widen_plane(lo, hi, ia, ib, box)
     for k, v in new.items():
         prog[k] = v
     for k, v in moved.items():
-        p[k] = v
-        if v < lo[k]:
-            lo[k] = v
-        elif v > hi[k]:
-            hi[k] = v
+        _box_at(p, lo, hi, k, v)
     return True

@@ -425,15 +425,7 @@ class BoxRows:
                 lo[i] = v
             elif v > hi[i]:
                 hi[i] = v
-        la, ha, lb, hb = box  # the ends' box and the arc's extremes
-        if la < lo[ia]:
-            lo[ia] = la
-        if ha > hi[ia]:
-            hi[ia] = ha
-        if lb < lo[ib]:
-            lo[ib] = lb
-        if hb > hi[ib]:
-            hi[ib] = hb
+        widen_plane(lo, hi, ia, ib, box)  # the ends' box and the arc's extremes
         self.prev_end = end
         self.count += 1
         if self.count >= self.max_rows:
@@ -453,6 +445,29 @@ class BoxRows:
 _TINY_DEN = 10**12
 _TINY_SQ = _TINY_DEN * _TINY_DEN
 _TINY_BOUND = 4 * (_TINY_DEN - 1) ** 2
+
+
+def widen_plane(lo: list[int], hi: list[int], ia: int, ib: int, box: tuple[int, int, int, int] | None) -> bool:
+    """A box (``lo``, ``hi``: scaled integers by axis) widened in the plane's axes ``ia``, ``ib`` by an arc's
+    ``box`` (:func:`r_arc_box`'s, :func:`centre_arc_box`'s), False when there is none (the interpreter decides
+    the arc).
+
+    >>> lo, hi = [0, 0, 0], [5, 5, 5]
+    >>> widen_plane(lo, hi, 0, 1, (-2, 3, 1, 7)), lo, hi, widen_plane(lo, hi, 0, 1, None)
+    (True, [-2, 0, 0], [5, 7, 5], False)
+    """
+    if box is None:
+        return False
+    la, ha, lb, hb = box
+    if la < lo[ia]:
+        lo[ia] = la
+    if ha > hi[ia]:
+        hi[ia] = ha
+    if lb < lo[ib]:
+        lo[ib] = lb
+    if hb > hi[ib]:
+        hi[ib] = hb
+    return True
 
 
 def r_arc_box(sa: int, sb: int, ea: int, eb: int, r: int, cw: bool) -> tuple[int, int, int, int] | None:

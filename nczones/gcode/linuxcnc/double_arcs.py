@@ -28,13 +28,11 @@ The arc's box: the annulus sector between radii ``r_min`` and ``r_max`` (the exa
 over the exact sweep holds the arc.  Its box is the box of its corners (within ``|r1 - r0|`` of the end
 points) and, for every axis direction ``+X, +Y, -X, -Y`` the sweep contains, ``C +- r_max`` on that axis
 (over an angle interval without such a direction a coordinate is monotone or has its one extreme at an
-end).  The sweep's ends are the angles of ``S - C`` and ``E - C``; a vector ``v`` moved by at most ``d``
-(Euclidean) turns by at most ``asin(d / |v'|) <= pi/2 d / |v'|``, so each end angle is known within
-``eta = 2.5 err / |v'|`` (``d <= sqrt 2 err``) plus ``10**-12`` for ``atan2`` and the float ``2 pi``.  A
-direction is taken when it is within the computed sweep grown by those angles; when the computed sweep
-is within them of 0 or of a whole turn (the exact one may be either: LinuxCNC makes an end on the start's
-ray a whole turn), all four are taken.  Taking a direction the exact sweep does not contain only grows
-the box, which stays sound.
+end).  The sweep's ends are ``u = S - C`` and ``w = E - C``, each component within ``err`` of its double: the
+directions taken are those of every sweep between a quadrant the exact ``u`` may lie in and one the exact ``w``
+may lie in (:func:`_box`; a sweep of about 0 or a whole turn takes all four: LinuxCNC makes an end on the
+start's ray a whole turn).  Taking a direction the exact sweep does not contain only grows the box, which
+stays sound.
 
 Quick boxes: :func:`r_screen` (the discs of radius ``2|R|`` about the ends, or for ``R > 0`` the disc on the
 chord, no square root) and :func:`ij_screen` (the centre +- the larger radius) hold the arc by the same error
@@ -63,9 +61,6 @@ __all__ = ["R_INCH_REL", "R_WHY", "chain_offb", "inch_offb", "inch_rule", "ij_ar
            "r_screen_code", "radius_rule", "refined", "sector_box"]
 
 _U = 2.0**-52
-_TAU = 2.0 * math.pi
-#: Angle slack (radians) for atan2, the float 2 pi and the sums of angles: far above their rounding.
-_SLACK = 1e-12
 #: An R arc is declined unless ``X' > _HALF * R'**2`` (its chord is clearly shorter than 2|R|).
 _HALF = 1e-9
 #: :func:`r_screen`'s quick form of its last decline test (``ed (l1 + ed) < _QUICK_X R**2``): see its docstring.
@@ -78,8 +73,6 @@ _A_INCH = 25.4 * 2 * 0.001 * math.sqrt(2)
 #: LinuxCNC refuses an I/J radius below 0.00005 inch ("Zero-radius arc", ``interpreter.LINUXCNC_ZERO_RADIUS_SQ``):
 #: the pass takes radii clearly above it (the radii's doubles are within ``err / 2`` of the exact ones).
 _ZERO_RADIUS = 0.00127 * (1 + 1e-6)
-#: The directions +X, +Y, -X, -Y as angles.
-_ANGLES = (0.0, math.pi / 2, math.pi, -math.pi / 2)
 
 
 def radius_rule(tolerance: Fraction | str) -> float:
@@ -411,7 +404,8 @@ _QUADRANT = (0, 3, 1, 2)
 #: its way through n quadrant boundaries (n = 4: all of them).
 _CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
                  for q in range(4))
-_ALL = (True, True, True, True)
+_SWEEPS: tuple[tuple[bool, bool, bool, bool, bool], ...] | None = None
+_next_after = math.nextafter  # (a global: one lookup less a call than math.nextafter)
 
 
 def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: float, uy: float, wx: float,
@@ -420,25 +414,29 @@ def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: f
     ``widen`` and rounded outwards (``err`` bounds the error of ``u = S - C`` and ``w = E - C`` per
     component).
 
-    The directions: when no component of ``u``, ``w`` is within ``err`` of 0 the exact vectors lie in the
-    quadrants of the doubles, and a counter-clockwise sweep crosses the boundaries from the start's quadrant
-    to the end's; from a quadrant to itself it crosses none when the end is ahead of the start (their cross
-    product clearly positive: less than a quarter turn) and all four otherwise (behind it, or too close to
-    tell: a whole turn is then taken, sound).  The cross product's error is at most
-    ``err (|ux| + |uy| + |wx| + |wy|) + 2 err**2`` plus its own rounding.  Otherwise the angles decide
-    (:func:`_by_angles`)."""
+    The directions are the union over every quadrant the exact ``u`` and ``w`` may lie in (:data:`_SWEEPS`;
+    no ``abs`` calls and no angles, comp42).  Sound: a component more than ``err`` from 0 has the exact one's
+    sign; one within ``err`` may have either, so the exact vector lies in one of the closed quadrants taken,
+    and the union holds the directions of the exact pair's (a counter-clockwise sweep crosses the boundaries
+    from the start's quadrant to the end's).  A pair in one quadrant holds none when the end is clearly
+    ahead of the start (their cross product, whose error is at most ``err (|ux| + |uy| + |wx| + |wy|) + 2
+    err**2`` plus its own rounding, clearly positive: the sweep is then less than a quarter turn inside the
+    closed quadrant, a direction on its edge only at an end, a row the box holds widened) and all four
+    otherwise (behind it, or too close to tell: a whole turn is then taken, sound).  A vector with both
+    components within ``err`` (an arc of radius about 0) takes all four.  Where no component is within
+    ``err`` of 0 these are the quadrants of the doubles."""
     if cw:  # clockwise from u to w is counter-clockwise from w to u
         ux, uy, wx, wy = wx, wy, ux, uy
-    if abs(ux) > err and abs(uy) > err and abs(wx) > err and abs(wy) > err:
-        q = _QUADRANT[2 * (ux < 0) + (uy < 0)]
-        n = (_QUADRANT[2 * (wx < 0) + (wy < 0)] - q) % 4
-        if n == 0:
-            a, b = ux * wy, uy * wx
-            tol = err * (abs(ux) + abs(uy) + abs(wx) + abs(wy)) * 1.01 + 2 * err * err + (abs(a) + abs(b)) * 2.0**-51
-            n = 0 if a - b > tol else 4
-        px, py, nx, ny = _CROSSED[q][n]
-    else:
-        px, py, nx, ny = _by_angles(ux, uy, wx, wy, err)
+    k = (((0 if ux > err else 1 if ux < -err else 2) * 3 + (0 if uy > err else 1 if uy < -err else 2)) * 3
+         + (0 if wx > err else 1 if wx < -err else 2)) * 3 + (0 if wy > err else 1 if wy < -err else 2)
+    px, py, nx, ny, same = (_SWEEPS or _sweeps())[k]
+    if same:  # a pair in one quadrant: none more when w is clearly ahead of u, else all
+        a, b = ux * wy, uy * wx
+        tol = err * ((ux if ux >= 0.0 else -ux) + (uy if uy >= 0.0 else -uy) + (wx if wx >= 0.0 else -wx)
+                     + (wy if wy >= 0.0 else -wy)) * 1.01 + 2 * err * err \
+            + ((a if a >= 0.0 else -a) + (b if b >= 0.0 else -b)) * 2.0**-51
+        if not a - b > tol:
+            px = py = nx = ny = True
     xlo, xhi = (sx, ex) if sx < ex else (ex, sx)
     ylo, yhi = (sy, ey) if sy < ey else (ey, sy)
     if px and cx + rmax > xhi:
@@ -449,24 +447,37 @@ def _box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, ux: f
         yhi = cy + rmax
     if ny and cy - rmax < ylo:
         ylo = cy - rmax
-    return (math.nextafter(xlo - widen, _DOWN), math.nextafter(xhi + widen, _UP),
-            math.nextafter(ylo - widen, _DOWN), math.nextafter(yhi + widen, _UP))
+    return (_next_after(xlo - widen, _DOWN), _next_after(xhi + widen, _UP), _next_after(ylo - widen, _DOWN),
+            _next_after(yhi + widen, _UP))
 
 
-def _by_angles(ux: float, uy: float, wx: float, wy: float, err: float) -> tuple[bool, ...]:
-    """The directions (+X, +Y, -X, -Y) a counter-clockwise sweep from ``u`` to ``w`` may hold, by their angles
-    (module docstring)."""
-    ru, rw = math.hypot(ux, uy), math.hypot(wx, wy)
-    if not (ru > 2 * err and rw > 2 * err):
-        return _ALL
-    start = math.atan2(uy, ux)
-    eta = 2.5 * err / ru + 2.5 * err / rw + _SLACK
-    sweep = (math.atan2(wy, wx) - start) % _TAU
-    if sweep < 4 * eta or sweep > _TAU - 4 * eta:
-        return _ALL
-    return tuple((angle - start + eta) % _TAU <= sweep + 4 * eta for angle in _ANGLES)
+def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
+    """:data:`_SWEEPS`: per sign code of ``(ux, uy, wx, wy)`` (0 above ``err``, 1 below ``-err``, 2 within it;
+    ``((ux * 3 + uy) * 3 + wx) * 3 + wy``) the directions (+X, +Y, -X, -Y) a counter-clockwise sweep from a
+    quadrant ``u`` may lie in to one ``w`` may lie in crosses, and whether a pair in one quadrant is among them
+    (built at the first arc box: not at start-up)."""
+    global _SWEEPS
+    signs = ((False,), (True,), (False, True))  # the possible ``< 0`` of a component
+    out = []
+    for code in range(81):
+        c = (code // 27, code // 9 % 3, code // 3 % 3, code % 3)
+        if (c[0] == 2 and c[1] == 2) or (c[2] == 2 and c[3] == 2):
+            out.append((True, True, True, True, False))
+            continue
+        us = {_QUADRANT[2 * x + y] for x in signs[c[0]] for y in signs[c[1]]}
+        ws = {_QUADRANT[2 * x + y] for x in signs[c[2]] for y in signs[c[3]]}
+        dirs, same = [False] * 4, False
+        for q in us:
+            for r in ws:
+                n = (r - q) % 4
+                if n == 0:
+                    same = True
+                dirs = [d or e for d, e in zip(dirs, _CROSSED[q][n])]
+        out.append((*dirs, same))  # type: ignore[arg-type]
+    _SWEEPS = tuple(out)
+    return _SWEEPS
 
 
 #: :func:`_box` under a public name: the box of an annulus sector about a centre the caller has (the corner arcs
-#: of cutter compensation, :mod:`.double_comp`, about the programmed corner)
+#: and compensated arcs of cutter compensation, :mod:`.double_comp`'s ``corner_box``)
 sector_box = _box

@@ -22,7 +22,7 @@ pass's rows of the move as without compensation.
 A convex corner of a feed is an arc about the programmed corner (the previous programmed point, a row of
 the pass within its bound) from the previous compensated end to the next one (a spiral when the two radii
 differ: the full path's segment is that spiral), clockwise for G41.  Its box (:func:`corner_box`) is
-:mod:`.double_arcs`' ``_box`` of the annulus sector about the centre's double, with ``err`` as ``ij_check``'s:
+:mod:`.double_arcs`' ``sector_box`` of the annulus sector about the centre's double, with ``err`` as ``ij_check``'s:
 the centre's and the ends' doubles are within the rows' bound (``rho <= (4 m + 2**-8) 2**-52``, ``m`` above
 every magnitude and the offsets), so ``u = S - C``, ``w = E - C`` and the radii are within ``err / 2`` of
 the exact ones, as there.  The corner arc joins the pass's arcs (``DoublePath.arc_rows``, its box already
@@ -82,7 +82,7 @@ from .comp_floats import (
     retreat,
     reverses,
 )
-from .double_arcs import EXACT, ij_check, r_screen
+from .double_arcs import EXACT, ij_check, r_screen, sector_box
 
 # not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
 TYPE_CHECKING = False
@@ -103,19 +103,9 @@ _U = 2.0**-52
 def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float, cw: bool,
                offb: float, more: float = 0.0) -> tuple[float, float, float, float]:
     """The box (``xlo, xhi, ylo, yhi``) of a corner arc from row ``(sx, sy)`` to row ``(ex, ey)`` about the
-    programmed corner's row ``(cx, cy)`` (the module's docstring: ``double_arcs._box`` with ``ij_check``'s
-    ``err``; ``offb`` bounds the offsets), or of a compensated programmed arc about its centre's double
-    (``more``: a magnitude its centre's error also depends on, added to ``m``).
-
-    ``double_arcs._box`` in one function (comp42: no ``abs`` calls, and no angles for an end on the centre's
-    axis, as a quarter arc's): the directions are the union over every quadrant the exact ``u = S - C`` and
-    ``w = E - C`` may lie in (:data:`_SWEEPS`).  Sound: a component more than ``err`` from 0 has the exact
-    one's sign; one within ``err`` may have either, so the exact vector lies in one of the closed quadrants
-    taken, and the union holds the directions of the exact pair's.  A pair in one quadrant holds none when the
-    cross product is clearly positive (``_box``'s test, which holds for vectors of one closed quadrant: the
-    sweep is then less than a quarter turn inside it, a direction on its edge only at an end, a row the box
-    holds widened) and all four otherwise.  A vector with both components within ``err`` (an arc of radius
-    about 0) takes all four.
+    programmed corner's row ``(cx, cy)`` (the module's docstring: :func:`~.double_arcs.sector_box`, the pass's
+    arcs' box, with ``ij_check``'s ``err``; ``offb`` bounds the offsets), or of a compensated programmed arc
+    about its centre's double (``more``: a magnitude its centre's error also depends on, added to ``m``).
 
     >>> [round(v, 9) + 0.0 for v in corner_box(0.0, 1.0, 1.0, 0.0, 0.0, 0.0, True, 0.0)]
     [0.0, 1.0, 0.0, 1.0]
@@ -127,70 +117,8 @@ def corner_box(sx: float, sy: float, ex: float, ey: float, cx: float, cy: float,
     m = (sx if sx >= 0.0 else -sx) + (sy if sy >= 0.0 else -sy) + r0 + r1 + offb + more
     err = (64.0 * m + 0.0625) * _U
     if r1 > r0:
-        widen, rmax = r1 - r0 + err, r1
-    else:
-        widen, rmax = r0 - r1 + err, r0
-    if cw:  # clockwise from u to w is counter-clockwise from w to u
-        ux, uy, wx, wy = wx, wy, ux, uy
-    k = (((0 if ux > err else 1 if ux < -err else 2) * 3 + (0 if uy > err else 1 if uy < -err else 2)) * 3
-         + (0 if wx > err else 1 if wx < -err else 2)) * 3 + (0 if wy > err else 1 if wy < -err else 2)
-    px, py, nx, ny, same = (_SWEEPS or _sweeps())[k]
-    if same:  # a pair in one quadrant: none more when w is clearly ahead of u (``_box``'s test), else all
-        a, b = ux * wy, uy * wx
-        tol = err * ((ux if ux >= 0.0 else -ux) + (uy if uy >= 0.0 else -uy) + (wx if wx >= 0.0 else -wx)
-                     + (wy if wy >= 0.0 else -wy)) * 1.01 + 2 * err * err \
-            + ((a if a >= 0.0 else -a) + (b if b >= 0.0 else -b)) * 2.0**-51
-        if not a - b > tol:
-            px = py = nx = ny = True
-    xlo, xhi = (sx, ex) if sx < ex else (ex, sx)
-    ylo, yhi = (sy, ey) if sy < ey else (ey, sy)
-    if px and cx + rmax > xhi:
-        xhi = cx + rmax
-    if nx and cx - rmax < xlo:
-        xlo = cx - rmax
-    if py and cy + rmax > yhi:
-        yhi = cy + rmax
-    if ny and cy - rmax < ylo:
-        ylo = cy - rmax
-    return (_next_after(xlo - widen, _DOWN), _next_after(xhi + widen, _UP), _next_after(ylo - widen, _DOWN),
-            _next_after(yhi + widen, _UP))
-
-
-def _sweeps() -> tuple[tuple[bool, bool, bool, bool, bool], ...]:
-    """:data:`_SWEEPS`: per sign code of ``(ux, uy, wx, wy)`` (0 above ``err``, 1 below ``-err``, 2 within it;
-    ``((ux * 3 + uy) * 3 + wx) * 3 + wy``) the directions (+X, +Y, -X, -Y) a counter-clockwise sweep from a
-    quadrant ``u`` may lie in to one ``w`` may lie in crosses, and whether a pair in one quadrant is among them
-    (built at the first corner arc: not at start-up)."""
-    global _SWEEPS
-    signs = ((False,), (True,), (False, True))  # the possible ``< 0`` of a component
-    out = []
-    for code in range(81):
-        c = (code // 27, code // 9 % 3, code // 3 % 3, code % 3)
-        if (c[0] == 2 and c[1] == 2) or (c[2] == 2 and c[3] == 2):
-            out.append((True, True, True, True, False))
-            continue
-        us = {_QUADRANT[2 * x + y] for x in signs[c[0]] for y in signs[c[1]]}
-        ws = {_QUADRANT[2 * x + y] for x in signs[c[2]] for y in signs[c[3]]}
-        dirs, same = [False] * 4, False
-        for q in us:
-            for r in ws:
-                n = (r - q) % 4
-                if n == 0:
-                    same = True
-                dirs = [d or e for d, e in zip(dirs, _CROSSED[q][n])]
-        out.append((*dirs, same))  # type: ignore[arg-type]
-    _SWEEPS = tuple(out)
-    return _SWEEPS
-
-
-#: Quadrants by the signs of a vector's components (``2 (x < 0) + (y < 0)``; ``double_arcs._QUADRANT``) and the
-#: directions a counter-clockwise sweep crosses from quadrant q through n boundaries (``double_arcs._CROSSED``).
-_QUADRANT = (0, 3, 1, 2)
-_CROSSED = tuple(tuple(tuple(any((q + t) % 4 == d for t in range(1, n + 1)) for d in range(4)) for n in range(5))
-                 for q in range(4))
-_SWEEPS: tuple[tuple[bool, bool, bool, bool, bool], ...] | None = None
-_DOWN, _UP = -math.inf, math.inf
-_next_after = math.nextafter
+        return sector_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, r1, r1 - r0 + err, err, cw)
+    return sector_box(sx, sy, ex, ey, cx, cy, ux, uy, wx, wy, r0, r0 - r1 + err, err, cw)
 
 
 def comp_others(groups: dict[str, int], others: list[str]) -> list[str]:
