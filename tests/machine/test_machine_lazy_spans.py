@@ -4,46 +4,21 @@ every key of a file that loads)."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from nczones.errors import MachineFileError
 from nczones.machine import parse_machine
 
-BAD = '''[machine]
-name = "bad"
-axes = ["X", "Y", "Z"]
-pulse = "0.0001"
-[machine.rapid]
-X = "-5"
-Y = "10000"
-Q = "1"
-[machine.reference]
-X = "0"
-Y = "abc"
-Z = "0"
-[tool_lengths]
-H1 = "100000000000"
-T2 = "3"
-[[zones]]
-name = "travel"
-kind = "box"
-min = { X = "-100000", Y = "zz", Z = "-100000" }
-max = { X = "100000000000", Y = "100000", Z = "100000" }
-[[zones]]
-name = "b"
-kind = "box"
-[zones.min]
-X = "5"
-[zones.max]
-X = "-1e5"
-Y = "2000000000000"
-'''
+#: a machine file wrong in each of those tables (a golden file: its check-machine output is pinned there too)
+BAD = Path(__file__).resolve().parents[1] / "golden" / "machine" / "lazy_spans.toml"
 
 
 def test_each_diagnostic_points_at_its_key():
     # the spans main (8aeb531) gave, every one found the eager way (a [zones.max] sub-table's keys have none)
     with pytest.raises(MachineFileError) as err:
-        parse_machine(BAD, "bad.toml")
+        parse_machine(BAD.read_text(encoding="utf-8"), "bad.toml")
     found = [(d.code, d.span.line, d.span.column) if d.span is not None else (d.code, None, None)
              for d in err.value.diagnostics]
     assert found == [("ZN106", 6, 1), ("ZN110", 8, 1), ("ZN102", 5, 1), ("ZN103", 11, 1), ("ZN105", 14, 1),
