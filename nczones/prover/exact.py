@@ -24,6 +24,7 @@ irrational paths.
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from fractions import Fraction
 
@@ -541,24 +542,7 @@ def line_depth(
             for s in (-margin, margin, F0):
                 lines.append((a - (c + s), b - (c + s)))
                 lines.append((-(a - (c + s)), -(b - (c + s))))
-    cands = {F0, F1}
-    exact = True
-    for f0, f1 in lines:
-        if f1 != f0:
-            t = f0 / (f0 - f1)
-            if 0 < t < 1:
-                cands.add(t)
-    if len(lines) ** 2 > max_candidates:
-        exact = False
-        pairs: Iterable[tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]] = []
-    else:
-        pairs = itertools.combinations(lines, 2)
-    for (f0, f1), (g0, g1) in pairs:
-        den = (f1 - f0) - (g1 - g0)
-        if den:
-            t = (g0 - f0) / den
-            if 0 < t < 1:
-                cands.add(t)
+    cands, exact = _breakpoints(lines, max_candidates)
     best: Fraction | None = None
     best_t = F0
     for t in sorted(cands):
@@ -568,6 +552,45 @@ def line_depth(
             best, best_t = v, t
     assert best is not None  # t = 0 and t = 1 are candidates
     return best, best_t, exact and LINE_DEPTH_EXACT.of(zone)
+
+
+def _breakpoints(lines: Sequence[tuple[Fraction, Fraction]], max_candidates: int) -> tuple[set[Fraction], bool]:
+    """The ``t`` in [0, 1] where one of ``lines`` (``f(t) = f0 + t (f1 - f0)``, each with its negation) is zero or
+    two of them are equal, with 0 and 1; and whether the pairs were taken (at most ``max_candidates`` pairs: else
+    only the zeros, and ``False``).
+
+    ``t`` is the same when every line is scaled by one factor, so each is taken as integers over the common
+    denominator and a candidate becomes a ``Fraction`` once, when it lies in (0, 1): the pairwise crossings in
+    ``Fraction`` arithmetic cost a violating piece some 4 ms (issue 36: a 229-line unsafe program took 29 s,
+    nearly all of it here).  Each line is taken once up to its sign (a line and its negation cross only at its
+    zero), and a pair gives both of its crossings, ``f = g`` and ``f = -g``: the same set as every pair of the
+    signed list (``tests/prover/test_line_depth_breakpoints.py`` holds it to that).
+
+    >>> sorted(_breakpoints([(Fraction(-1), Fraction(1)), (Fraction(1, 2), Fraction(1, 2))], 100)[0])
+    [Fraction(0, 1), Fraction(1, 4), Fraction(1, 2), Fraction(3, 4), Fraction(1, 1)]
+    """
+    exact = len(lines) ** 2 <= max_candidates
+    scale = 1
+    for f0, f1 in lines:
+        scale = math.lcm(scale, f0.denominator, f1.denominator)
+    rows = set()  # (a, s): f(t) * scale = a + s t, its sign chosen so that s > 0, or a >= 0 where s = 0
+    for f0, f1 in lines:
+        a = f0.numerator * (scale // f0.denominator)
+        s = f1.numerator * (scale // f1.denominator) - a
+        rows.add((-a, -s) if s < 0 or (s == 0 and a < 0) else (a, s))
+    found = {(-a, s) for a, s in rows if s and 0 < -a < s}  # zeros: a + s t = 0
+    if exact:
+        ordered = list(rows)
+        for i, (a, s) in enumerate(ordered):
+            for b, u in ordered[i + 1:]:
+                for num, den in ((b - a, s - u), (-b - a, s + u)):  # a + s t = b + u t, and = -(b + u t)
+                    if den < 0:
+                        num, den = -num, -den
+                    if 0 < num < den:
+                        found.add((num, den))
+    cands = {F0, F1}
+    cands.update(Fraction(num, den) for num, den in found)
+    return cands, exact
 
 
 #: Is the depth along a line piecewise linear with breakpoints at the zone constants (then
