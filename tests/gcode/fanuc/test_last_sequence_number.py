@@ -195,11 +195,16 @@ ALONE = {
 }
 
 
-def _alone_read(text: str, fast: bool) -> Fraction | None:
+def alone_read(text: str, fast: bool, lanes: bool = True) -> Fraction | None:
+    """The N the move by ``#4114`` reads (None: the read is unknown); ``lanes=False``: no block lanes."""
     from nczones.gcode import interpret_text
+    from nczones.gcode.interpreter import Interpreter
 
-    run = interpret_text(text, mill(), file="t.nc", fast=fast)
-    ends = [s.end for s in run.segments()]
+    with pytest.MonkeyPatch.context() as mp:
+        if not lanes:
+            mp.setattr(Interpreter, "lane_for_blocks", lambda self: None)
+        run = interpret_text(text, mill(), file="t.nc", fast=fast)
+        ends = [s.end for s in run.segments()]
     if run.unsupported:
         assert run.unsupported[0].code == "#4114" and "not settled" in run.unsupported[0].reason, run.unsupported
         return None
@@ -210,7 +215,7 @@ def _alone_read(text: str, fast: bool) -> Fraction | None:
 @pytest.mark.parametrize("name", sorted(ALONE))
 def test_a_line_of_its_n_alone_makes_the_read_unknown_where_it_matters(name, fast):
     middle, n = ALONE[name]
-    assert _alone_read(HEAD + middle + TAIL, fast) == n, name
+    assert alone_read(HEAD + middle + TAIL, fast) == n, name
 
 
 @pytest.mark.parametrize("fast", [True, False])
@@ -220,7 +225,7 @@ def test_a_vectorized_run_with_an_n_alone(fast, alone):
     unknown on every path; with the N alone earlier in the run it is the last block's N."""
     body = "".join(f"N{k} G01 X{k % 7}. Y{k % 5}.\n" for k in range(1, 1201))
     text = HEAD + "#1 = 0\n" + (body + "N1500\n" if alone else "N1500\n" + body) + TAIL
-    assert _alone_read(text, fast) == (None if alone else 1200)
+    assert alone_read(text, fast) == (None if alone else 1200)
 
 
 def test_a_block_without_words_keeps_its_n_apart():

@@ -20,7 +20,7 @@ from fractions import Fraction
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from tests.gcode.fanuc.helpers import mill
+from tests.gcode.fanuc.test_last_sequence_number import alone_read
 
 HEAD = "O6000\nG90 G17 G21 G54 F300.\n#1 = 0\nN1 G01 X1. Y1.\n"
 TAIL = "G01 X[#4114 + 0.5] Y2.\nM30\n"
@@ -71,22 +71,7 @@ def _programs(draw) -> tuple[str, Fraction | None]:
     return HEAD + "\n".join(lines) + "\n" + TAIL, read
 
 
-def _read(text: str, fast: bool, lanes: bool) -> Fraction | None:
-    """The N the move by ``#4114`` reads (None: the read is unknown)."""
-    import pytest
-
-    from nczones.gcode import interpret_text
-    from nczones.gcode.interpreter import Interpreter
-
-    with pytest.MonkeyPatch.context() as mp:
-        if not lanes:
-            mp.setattr(Interpreter, "lane_for_blocks", lambda self: None)
-        run = interpret_text(text, mill(), file="t.nc", fast=fast)
-        ends = [s.end for s in run.segments()]
-    if run.unsupported:
-        assert run.unsupported[0].code == "#4114" and "not settled" in run.unsupported[0].reason, run.unsupported
-        return None
-    return ends[-1][0] - 100 - Fraction(1, 2)
+_read = alone_read  # the N the move by #4114 reads (None: unknown), with or without block lanes
 
 
 @settings(max_examples=EXAMPLES, deadline=None, database=None, derandomize=EXAMPLES <= 200,
