@@ -227,6 +227,19 @@ def _range_widening(ranges: Sequence[ParamRange], axes: Sequence[str], tool_axis
     return out
 
 
+class _ZoneView:
+    """What the motions' screen (:data:`~nczones.prover.screen.ZONE_ROWS`) reads of a prover: the zones, the
+    margin, the tool axis, and its cache of per-zone constants (:class:`~nczones.prover.screen.ScreenedProver`)."""
+
+    __slots__ = ("zones", "margin", "tool_axis", "screen_constants")
+
+    def __init__(self, zones: Sequence[Any], margin: Fraction, tool_axis: str | None):
+        self.zones = tuple(zones)
+        self.margin = margin
+        self.tool_axis = tool_axis
+        self.screen_constants: dict | None = None
+
+
 class CornerCheck:
     """Follows a run's motion (wrap the chunks with :meth:`watch`) and proves its blended corners.
 
@@ -296,6 +309,7 @@ class CornerCheck:
         self._last_extra: tuple[Any, tuple[tuple[str, Fraction], ...]] = ((), ())
         self._naive_modes = 0  # the length of the mode table when it was last searched for G64 Q without P
         self._mode_hit: tuple[int, int, PathMode, int, Any] | None = None  # mode_of's last answer
+        self._zone_view: _ZoneView | None = None  # _rows_proved: the zones as the motions' screen reads them
 
     # ------------------------------------------------------------------ the stream
     def watch(self, chunks: Iterable[Any]) -> Iterator[Any]:
@@ -1080,7 +1094,12 @@ class CornerCheck:
         union of many at once, halves of what does not fit, one by one exactly at the end."""
         assert chunk.scale is not None  # a column chunk
         den = 10**chunk.scale
-        todo = [(0, int(i.size))]
+        proved = self._rows_proved(chunk, c_lo, c_hi, boxed, tl_a, tl_b)
+        if proved is not None and proved.any():
+            self.corners += int(proved.sum())
+            rest = (~proved).nonzero()[0]
+            c_lo, c_hi, i, j, boxed, tl_a, tl_b = (x[rest] for x in (c_lo, c_hi, i, j, boxed, tl_a, tl_b))
+        todo = [(0, int(i.size))] if i.size else []
         axes = range(c_lo.shape[1])
         while todo:
             a, b = todo.pop()
@@ -1098,6 +1117,51 @@ class CornerCheck:
                 continue
             size = -(-(b - a) // SPLIT)
             todo.extend((x, min(x + size, b)) for x in range(a, b, size))
+
+    def _rows_proved(self, chunk: MotionChunk, c_lo: Any, c_hi: Any, boxed: Any, tl_a: Any, tl_b: Any) -> Any:
+        """Which corners' own boxes (``c_lo``/``c_hi``, integers over ``2 * 10**scale``) the motions' screen proves
+        (:data:`~nczones.prover.screen.ZONE_ROWS`, every zone kind, all rows at once), or None when it cannot be
+        asked (parameter ranges widen the boxes; the chunk's axes are not the machine's; a number too large).
+
+        Soundness: each row's box is rounded outwards to ``10**-scale`` and grown by the margin rounded up, and the
+        screen passes a row only when that box fits every zone (tip zones seen at the row's tool length), as
+        :func:`~nczones.prover.exact.box_fits` would show of the corner's exact box, which it holds.  A row is
+        asked only where the union test of :meth:`_screen` could take it alone (its box computed, both motions
+        at one tool length); every other row goes on to the union tests and the exact path as before.  The
+        screen takes the place of the union tests for rows it passes, never of a test that fails (a row it does
+        not pass is tested as before), so the corners proved are a subset of those :meth:`_fits` would prove of
+        the same boxes (``tests/prover/test_corner_row_screen.py`` holds the two to the same verdicts)."""
+        if self.widens or tuple(chunk.axes) != tuple(self.axes) or chunk.scale is None:
+            return None
+        import numpy as np
+
+        from .screen import ZONE_ROWS
+
+        margin = self.margin
+        d_up = -((-margin.numerator * 10**chunk.scale) // margin.denominator)
+        limit = 2**60
+        if d_up >= limit or int(np.abs(tl_a).max(initial=0)) >= limit or \
+                max(int(np.abs(c_lo).max(initial=0)), int(np.abs(c_hi).max(initial=0))) >= limit:
+            return None
+        lo, hi = c_lo // 2 - d_up, -((-c_hi) // 2) + d_up  # outwards to the chunk's scale, the margin rounded up
+        ok = boxed & (tl_a == tl_b)
+        names = list(self.axes)
+        view = self._zone_view
+        if view is None:
+            view = self._zone_view = _ZoneView(self.allowed.zones, margin, self.allowed.tool_axis)
+        for z in view.zones:
+            if not ok.any():
+                break
+            tip = z.point is ZonePoint.TIP
+
+            def rng(a: str) -> tuple[Any, Any]:
+                k = names.index(a)
+                if tip and a == view.tool_axis:  # noqa: B023 - called within this iteration
+                    return lo[:, k] - tl_a, hi[:, k] - tl_a
+                return lo[:, k], hi[:, k]
+
+            ZONE_ROWS(z, view, rng, ok, chunk.scale, names)
+        return ok
 
     # ------------------------------------------------------------------ Fanuc runs on column chunks
     def _hull_columns(self, chunk: MotionChunk, at: Any) -> None:
