@@ -49,7 +49,10 @@ and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
 ``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
 programs, and generated Fanuc Custom Macro B loops (a WHILE loop, a G65 call per iteration, an M98 call
 per iteration; rs274's column, marked ``*``, is rs274 on the LinuxCNC equivalent: the o-word loop, a sub called
-with three arguments, a sub called without) and LinuxCNC o-word loops of about ``--macro`` executed lines.
+with three arguments, a sub called without) and LinuxCNC o-word loops of about ``--macro`` executed lines, and
+issue 36's two zone rows of ``--small`` lines (``bench_zones.py``'s machines and programs): short moves 2.5 mm
+inside a 200-vertex outline (an allowed polygon zone), and moves across a 4,096-region stepped table, each
+verified against its own machine file instead of the box.
 Interpretation and verify
 run with a loop bound above any row's iterations (``--max-iterations``), so a row of a million lines is
 interpreted to its end rather than stopped as ``unknown`` at the default bound of 100,000 iterations.
@@ -90,6 +93,9 @@ print(n)
 
 #: The LinuxCNC equivalent rs274 runs for a Fanuc row (its file -> the equivalent's file), set by :func:`programs`.
 PEER_OF: dict[Path, Path] = {}
+
+#: The machine file of a row that is not checked against its dialect's box (the zone rows), set by :func:`programs`.
+MACHINE_OF: dict[Path, Path] = {}
 
 #: Runs of each command per row; the least CPU time is printed (``--repeat``).
 REPEAT = [1]
@@ -172,6 +178,7 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
     runs for a Fanuc row that has one."""
     import bench_fanuc
     import bench_gcode
+    import bench_zones
 
     out = []
 
@@ -214,6 +221,19 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
     gen(f"LinuxCNC o-word loop, {a.macro:,} executed lines", bench_fanuc.linuxcnc_macro_program(a.macro))
     gen(f"Fanuc G81 hole list, {a.small:,} holes", bench_fanuc.holes_program(a.small), "fanuc",
         peer=bench_fanuc.holes_program(a.small, dialect="linuxcnc"))
+    # issue 36's zone rows (bench/bench_zones.py's machines and programs): short moves 2.5 mm inside a digitised
+    # outline, and moves across a grinder's stepped table
+    zone_rows = (
+        ("200-vertex polygon zone", bench_zones.polygon_machine(200),
+         lambda p: bench_zones.polygon_program(a.small, p, bench_zones.inner_radius(200) - 2.5)),
+        ("4,096-region stepped table", bench_zones.table_machine(4096), lambda p: bench_zones.table_program(a.small, p)),
+    )
+    for name, machine, write in zone_rows:
+        p = d / f"program{len(out)}.ngc"
+        write(p)
+        MACHINE_OF[p] = m = d / f"machine{len(out)}.toml"
+        m.write_text(machine)
+        out.append((f"{name}, {a.small:,} lines", p, "linuxcnc", ""))
     return out
 
 
@@ -270,7 +290,9 @@ def main() -> None:
         for name, path, dialect, tol in programs(a, d):
             if a.only and a.only not in name:
                 continue
-            machine = machines[dialect]
+            machine = MACHINE_OF.get(path, machines[dialect])
+            if path in MACHINE_OF:  # its parsed machine file cached too: verify is a user's second run
+                _run_once([*nczones, "verify", str(machines["three-linuxcnc"]), "--machine", str(machine)], 60, env)
             peer_path = path if dialect == "linuxcnc" else PEER_OF.get(path)
             # --max-iterations: a loop row of more than 100,000 iterations is interpreted to its end (the default
             # bound would stop it early as unknown)
@@ -304,12 +326,12 @@ CACHE_ENV = "NCZONES_CACHE_DIR"
 def start_up(nczones: list[str], env: dict, d: Path) -> dict[str, Path]:
     """Write each dialect's box, warm the machine-file cache of ``env`` with it, and print a 3-line verify's CPU
     with the cache cold (a fresh, empty folder at every run: a user's first run) and warm (every later run).
-    Returns the boxes, by dialect."""
+    Returns the boxes, by dialect, and the 3-line programs (``three-`` and the dialect)."""
     machines = {}
     for dialect, text in (("linuxcnc", "G0 X1 Y1\nG1 X2 F100\nM30\n"), ("fanuc", "G0 X1. Y1.\nG1 X2. F100.\nM30\n")):
         machines[dialect] = machine = d / f"box-{dialect}.toml"
         machine.write_text(peer_box(dialect))
-        program = d / f"three-{dialect}.nc"
+        machines[f"three-{dialect}"] = program = d / f"three-{dialect}.nc"
         program.write_text(text)
         cmd = [*nczones, "verify", str(program), "--machine", str(machine), "--format", "json"]
         _run_once(cmd, 60, env)  # warms the cache

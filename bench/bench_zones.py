@@ -100,6 +100,7 @@ def table_program(n: int, path: Path) -> None:
         fh.write("G21 G90 G17\nG1 F1000\n")
         for _ in range(n):
             fh.write(f"X{rnd.randint(1000, 3999000) / 1000:.3f} Y{rnd.randint(0, 299000) / 1000:.3f}\n")
+        fh.write("M2\n")  # a program end: rs274 (bench_peers) ends without an error
 
 
 def inner_radius(n: int) -> float:
@@ -128,6 +129,7 @@ def polygon_program(n: int, path: Path, limit: float) -> None:
                 nx, ny = 80.0, 0.0
             x, y = nx, ny
             fh.write(f"X{x:.3f} Y{y:.3f}\n")
+        fh.write("M2\n")  # a program end: rs274 (bench_peers) ends without an error
 
 
 def case(kind: str, machine_path: str, program: str, z3_sample: int) -> None:

@@ -67,3 +67,27 @@ def test_the_peer_box_is_the_package_s_box_machine(dialect):
     assert [type(z) for z in machine.zones] == [BoxZone]
     wide = parse_machine(machines.peer_box(dialect, "900000")).zones[0]
     assert wide.contains({"X": 899999, "Y": 0, "Z": 0}) and not machine.zones[0].contains({"X": 899999, "Y": 0, "Z": 0})
+
+
+def test_the_zone_rows_run_on_their_own_machines(tmp_path):
+    """Issue 36's polygon and stepped-table rows: in the table with their machine files, every program proved
+    safe against its machine (the walk stays inside the outline, the moves on the table) and, where rs274 is
+    installed, run by it to the program end without an error."""
+    import shutil
+    import subprocess
+    from argparse import Namespace
+
+    from nczones.machine import load_machine
+    from nczones.prover import verify
+
+    a = Namespace(skip_large=True, small=600, macro=600, corpus=0, lines=0)
+    rows = [r for r in bench_peers.programs(a, tmp_path) if r[1] in bench_peers.MACHINE_OF]
+    assert [r[0] for r in rows] == ["200-vertex polygon zone, 600 lines", "4,096-region stepped table, 600 lines"]
+    for _name, path, _dialect, _tol in rows:
+        machine = load_machine(bench_peers.MACHINE_OF[path])
+        assert len(path.read_text().splitlines()) == 600 + 3
+        assert verify(str(path), machine).verdict.label == "safe"
+        if shutil.which("rs274"):
+            run = subprocess.run(["rs274", "-g", str(path), "/dev/null"], capture_output=True, text=True,
+                                 env={"HOME": str(tmp_path), "PATH": "/usr/bin:/bin"})
+            assert run.returncode == 0, run.stderr
