@@ -265,3 +265,16 @@ def test_the_row_screen_takes_the_corners_far_from_a_polygon(monkeypatch):
     # the walk's box (-40..40) passes the 40-gon (radius 55.6) at its corners: the chunk's one box does not fit (one test a
     # chunk); each corner is then the row screen's, none a union test or an exact corner
     assert calls["corner"] <= 2 and calls["fits"] <= 4, calls
+
+
+@given(x=st.fractions(), scale=st.integers(0, 12), up=st.booleans())
+def test_scaled_is_the_rounded_product(x, scale, up):
+    """``screen._scaled`` (the zones' limits at a chunk's scale, in integers) is the ceiling or floor of
+    ``x * 10**scale`` within the screen's bounds."""
+    import math
+
+    from nczones.prover import screen
+
+    v = x * 10**scale
+    want = max(min(math.ceil(v) if up else math.floor(v), screen._POS), screen._NEG)
+    assert screen._scaled(x, scale, up, 0) == want
