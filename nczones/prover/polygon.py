@@ -2,10 +2,11 @@
 
 Two structures per polygon, each built once and kept (keyed by the zone):
 
-* :class:`EdgeBoxes` — the edges' bounding boxes in floats.  A float filter
-  that keeps every edge whose box overlaps a query box is sound: rounding to
-  nearest is monotone, so boxes whose exact ranges meet still meet in
-  floats.  The exact tests then run in rationals on the few edges left.
+* :class:`EdgeBoxes` — the edges in integers (the vertices times their
+  common denominator), filed in horizontal bands: the edges whose boxes meet
+  a query box are found exactly without numpy, and a point is located in
+  integer arithmetic over the edges of its band (no ``Fraction`` an edge).
+  The exact tests then run on the few edges found.
 * :class:`PolygonGrid` — a grid of square cells over the polygon's box, in
   integers (coordinates times ``L``, the common denominator of the vertices
   and of the motion's scale).  A cell is *boundary* when the closed cell
@@ -35,9 +36,12 @@ from collections.abc import Callable
 from fractions import Fraction
 from typing import Any, TypeVar
 
-import numpy as np
-
 from ..zones import PolygonZone
+
+# not typing's: a type checker takes any TYPE_CHECKING for true; numpy loads with the grid (the fast path's)
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["EdgeBoxes", "PolygonGrid", "box_fits", "cached", "edge_boxes", "grid", "locate", "open_box_point",
            "plane_violation", "screen_rows"]
@@ -66,48 +70,96 @@ def cached(zone: PolygonZone, key: int, build: Callable[[], T]) -> T:
 
 
 class EdgeBoxes:
-    """The polygon's edges (exact) and their bounding boxes (floats, for filtering)."""
+    """The polygon's edges, exact, in integers and filed in horizontal bands (no numpy, no ``Fraction`` an edge).
+
+    The vertices times ``unit`` (the least common denominator of their coordinates) are integers; edge ``i``
+    (vertex ``i`` to ``i + 1``) is ``ints[i] = (ax, ay, bx, by)`` in those units.  The band of an integer ``y``
+    is ``(y - y0) // width`` clamped to ``0 .. len(bands) - 1``, nondecreasing in ``y``, and ``bands[k]`` lists
+    (ascending) every edge whose range of ``y`` holds an integer of band ``k``: an edge from its low ``y``'s band
+    to its high ``y``'s.  Invariant: an edge whose ``y`` range holds a real ``y*`` holds the integer
+    ``floor(y*)`` (its ends are integers), so it is listed in that integer's band.  The width is chosen so
+    that the lists hold a few entries an edge in all (at most about ``6 n``), whatever the polygon.
+    """
 
     def __init__(self, zone: PolygonZone):
         self.edges = zone.edges()
         v = zone.vertices
-        fx = np.array([float(p[0]) for p in v])
-        fy = np.array([float(p[1]) for p in v])
-        nx, ny = np.roll(fx, -1), np.roll(fy, -1)
-        self.x_lo, self.x_hi = np.minimum(fx, nx), np.maximum(fx, nx)
-        self.y_lo, self.y_hi = np.minimum(fy, ny), np.maximum(fy, ny)
+        unit = math.lcm(*{c.denominator for p in v for c in p})
+        self.unit = unit
+        pts = [(x.numerator * (unit // x.denominator), y.numerator * (unit // y.denominator)) for x, y in v]
+        n = len(pts)
+        self.ints = [(*pts[i], *pts[(i + 1) % n]) for i in range(n)]
+        y_lo = [min(ay, by) for _, ay, _, by in self.ints]
+        y_hi = [max(ay, by) for _, ay, _, by in self.ints]
+        self.x_lo = [min(ax, bx) for ax, _, bx, _ in self.ints]
+        self.x_hi = [max(ax, bx) for ax, _, bx, _ in self.ints]
+        self.y_lo, self.y_hi = y_lo, y_hi
+        self.y0 = min(y_lo)
+        span = max(y_hi) - self.y0 + 1
+        # n bands at most; wider when the edges are tall, so the lists hold at most 4 n + 2 n entries
+        self.width = max(1, -(-span // n), -(-sum(h - lo for lo, h in zip(y_lo, y_hi)) // (4 * n)))
+        count = -(-span // self.width)
+        self.bands: list[list[int]] = [[] for _ in range(count)]
+        for i in range(n):
+            for k in range(self.band(y_lo[i]), self.band(y_hi[i]) + 1):
+                self.bands[k].append(i)
+
+    def band(self, y: int) -> int:
+        """The band of the integer ``y`` (in units of ``1 / unit``), clamped to the bands there are."""
+        return min(max((y - self.y0) // self.width, 0), len(self.bands) - 1)
 
     def near(self, x0: Fraction, x1: Fraction, y0: Fraction, y1: Fraction) -> list[tuple[Pt, Pt]]:
-        """Every edge whose closed box meets the closed box ``[x0, x1] x [y0, y1]`` (and maybe a few more)."""
-        fx0, fx1, fy0, fy1 = float(x0), float(x1), float(y0), float(y1)
-        hit = np.flatnonzero((self.x_lo <= fx1) & (self.x_hi >= fx0) & (self.y_lo <= fy1) & (self.y_hi >= fy0))
-        return [self.edges[i] for i in hit.tolist()]
+        """Every edge whose closed box meets the closed box ``[x0, x1] x [y0, y1]`` (exactly those), in order.
+
+        An edge's ends are integers in units of ``1 / unit``: its range ``[lo, hi]`` meets ``[x0, x1]`` iff
+        ``lo <= floor(x1 unit)`` and ``hi >= ceil(x0 unit)``.  The bands searched are those of
+        ``floor(y0 unit)`` .. ``ceil(y1 unit)``: an edge that meets the box at some ``y*`` is listed in the
+        band of ``floor(y*)``, which lies between them (:class:`EdgeBoxes`)."""
+        u = self.unit
+        ix0, ix1 = -((-x0.numerator * u) // x0.denominator), (x1.numerator * u) // x1.denominator
+        fy0, cy1 = (y0.numerator * u) // y0.denominator, -((-y1.numerator * u) // y1.denominator)
+        iy0, iy1 = -((-y0.numerator * u) // y0.denominator), (y1.numerator * u) // y1.denominator
+        b0, b1 = self.band(fy0), self.band(cy1)
+        if b0 == b1:
+            cand: Any = self.bands[b0]
+        elif 2 * (b1 - b0) >= len(self.bands):
+            cand = range(len(self.ints))
+        else:
+            cand = sorted({i for k in range(b0, b1 + 1) for i in self.bands[k]})
+        x_lo, x_hi, y_lo, y_hi = self.x_lo, self.x_hi, self.y_lo, self.y_hi
+        return [self.edges[i] for i in cand if x_lo[i] <= ix1 and x_hi[i] >= ix0 and y_lo[i] <= iy1 and y_hi[i] >= iy0]
+
+    def locate(self, q: Pt) -> int:
+        """:func:`locate`, in integers: ``q`` over its coordinates' common denominator ``d``, the edges times
+        ``d``; the crossing test ``q_x < x_cross`` is the sign of the cross product ``(b - a) x (q - a)``
+        (times ``d``), which decides it for an edge going up and the other way for one going down."""
+        qx, qy = q
+        dx, dy = qx.denominator, qy.denominator
+        d = dx // math.gcd(dx, dy) * dy
+        u = qx.numerator * (d // dx) * self.unit
+        v = qy.numerator * (d // dy) * self.unit
+        inside = False
+        for i in self.bands[self.band(v // d)]:
+            ax, ay, bx, by = self.ints[i]
+            ayd, byd = ay * d, by * d
+            if (ayd < v and byd < v) or (ayd > v and byd > v):
+                continue  # the edge misses the line y = q_y
+            s = (bx - ax) * (v - ayd) - (by - ay) * (u - ax * d)
+            if s == 0 and min(ax, bx) * d <= u <= max(ax, bx) * d:
+                return 0
+            if (ayd > v) != (byd > v) and (s > 0) == (by > ay):
+                inside = not inside
+        return 1 if inside else -1
 
 
 def edge_boxes(zone: PolygonZone) -> EdgeBoxes:
     return cached(zone, 0, lambda: EdgeBoxes(zone))
 
 
-def _cross(o: Pt, a: Pt, b: Pt) -> Fraction:
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
 def locate(zone: PolygonZone, q: Pt) -> int:
-    """+1 strictly inside, 0 on the boundary, -1 outside (exact; the crossing number of a ray to +x)."""
-    eb = edge_boxes(zone)
-    fy = float(q[1])
-    inside = False
-    for i in np.flatnonzero((eb.y_lo <= fy) & (eb.y_hi >= fy)).tolist():
-        a, b = eb.edges[i]
-        if (a[1] < q[1] and b[1] < q[1]) or (a[1] > q[1] and b[1] > q[1]):
-            continue
-        if _cross(a, b, q) == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]):
-            return 0
-        if (a[1] > q[1]) != (b[1] > q[1]):
-            x_cross = a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
-            if q[0] < x_cross:
-                inside = not inside
-    return 1 if inside else -1
+    """+1 strictly inside, 0 on the boundary, -1 outside (exact; the crossing number of a ray to +x, half-open
+    rule: an edge counts when one end is above ``q`` and the other not; :meth:`EdgeBoxes.locate`)."""
+    return edge_boxes(zone).locate(q)
 
 
 def _meets(p0: Pt, r: Pt, a: Pt, b: Pt) -> list[Fraction]:
@@ -280,6 +332,8 @@ class PolygonGrid:
     """
 
     def __init__(self, zone: PolygonZone, unit: int):
+        import numpy as np
+
         self.unit = unit
         ints = [(int(x * unit), int(y * unit)) for x, y in zone.vertices]
         xs = [p[0] for p in ints]
@@ -348,6 +402,8 @@ class PolygonGrid:
 
 
 def _sat(cells: np.ndarray) -> np.ndarray:
+    import numpy as np
+
     out = np.zeros((cells.shape[0] + 1, cells.shape[1] + 1), dtype=np.int64)
     out[1:, 1:] = np.cumsum(np.cumsum(cells.astype(np.int64), axis=0), axis=1)
     return out
@@ -363,6 +419,8 @@ def screen_rows(zone: PolygonZone, scale: int, lo_a: np.ndarray, hi_a: np.ndarra
                 hi_b: np.ndarray) -> Any:
     """Rows whose closed boxes (plane part, ``int64`` at ``10**scale``) the grid proves: inside the polygon
     (allow) or missing it (forbid).  False means "not proved here", never "violates"."""
+    import numpy as np
+
     g = grid(zone, scale)
     k = g.unit // 10**scale
     ok = np.zeros(lo_a.shape, dtype=bool)
