@@ -404,6 +404,36 @@ class DoublePath:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
 
+    def apart(self, r0: int, r1: int, gap: Fraction) -> bool:
+        """Are rows ``r0`` and ``r1`` (``row0 <= r0``, numbered as for :meth:`enclosure`) more than ``gap`` apart on
+        some axis, their boxes ``enclosure(r + 1, r)`` compared, as their doubles show at once?  False: not
+        shown (compare the boxes).
+
+        Row ``r``'s box on an axis a motion computed lies within ``w_r + 2**-60`` of its double ``x_r``:
+        ``w_r = (4 (|x_r| + offset_bound) + 2**-8) 2**-52 + inc_bound``, :meth:`enclosure`'s widening, then
+        outwards to the ``2**-60`` grid.  So the two boxes are at least ``|x_0 - x_1| - w_0 - w_1 - 2**-59``
+        apart, more than ``gap`` when ``|x_0 - x_1|`` exceeds ``gap + w_0 + w_1 + 2**-59``; the test asks for
+        twice that bound evaluated in floats (each term within a relative ``2**-50`` of its value, the
+        difference ``|x_0 - x_1|`` within ``2**-53`` of its own: the factor 2 covers them; an infinite or NaN
+        bound shows nothing).  An axis at its exact start position in either row (no widening) is not tried.
+
+        >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.1, 0.3]),), (Fraction(0),), 3, 3, 0, 3, (Fraction(0),), (1,))
+        >>> p.apart(1, 3, Fraction(1, 20)), p.apart(1, 2, Fraction(0)), p.apart(0, 1, Fraction(0))
+        (True, False, False)
+        """
+        tiny2 = 2.0**-7 * 2.0**-52 + 2.0**-59  # two rows' 2**-8 ulp and grid steps
+        for a, col in enumerate(self.columns):
+            f = self.first_row[a]
+            if f == 0 or r0 < f:
+                continue
+            x0, x1 = col[r0 - self.row0], col[r1 - self.row0]
+            inc = self.inc_bound[a] if self.inc_bound else 0.0
+            bound = float(gap) + 4.0 * (abs(x0) + abs(x1) + 2.0 * float(self.offset_bound[a])) * 2.0**-52 \
+                + tiny2 + 2.0 * inc
+            if abs(x0 - x1) > 2.0 * bound:
+                return True
+        return False
+
     def reach(self, first: int, last: int, names: Any = None) -> dict[str, Fraction] | None:
         """Per axis of ``names`` (default all), a bound of how far a blended corner between two of motions
         ``first``..``last`` can leave their box (:func:`.double_reach.reach`, whose docstring says why it holds:
