@@ -1,5 +1,7 @@
 """The double pass's boxes (:class:`nczones.gcode.linuxcnc.doubles.DoublePath`) and the corner tests on them.
 
+* :func:`~nczones.gcode.linuxcnc.doubles.widened` (integers) is the ``Fraction`` formula it replaced, on
+  doubles of every magnitude (subnormals included), offset bounds and G91 chain bounds.
 * :meth:`~nczones.gcode.linuxcnc.doubles.DoublePath.apart` is sound: rows it calls apart have boxes farther
   apart than the gap on some axis; and :func:`nczones.prover.doubles.may_be_zero`, which asks it first, gives
   the answer of the boxes compared exactly on paths of motions around the dropped length.
@@ -9,17 +11,39 @@
 
 from __future__ import annotations
 
+import math
 from array import array
 from fractions import Fraction as F
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from nczones.gcode.linuxcnc.doubles import DoublePath
+from nczones.gcode.linuxcnc.doubles import DoublePath, widened
 from nczones.motion import DROPPED_BELOW
 from nczones.prover.doubles import may_be_zero
 
+ULP, TINY, GRID = F(1, 2**52), F(1, 2**8), 2**60
+
+doubles = st.one_of(st.floats(allow_nan=False, allow_infinity=False, min_value=-1e12, max_value=1e12),
+                    st.floats(allow_nan=False, allow_infinity=False, min_value=-1e-300, max_value=1e-300),
+                    st.sampled_from([0.0, -0.0, 5e-324, 0.1, 100.0001, 2.0**-60, 3e-7]))
 offset_bounds = st.sampled_from([F(0), F(0), F(1, 10), F(123456789, 1000), F(1, 3), F(10**9)])
+incs = st.sampled_from([0.0, 0.0, 1e-12, 2.0**-40, 3.3e-9])
+
+
+def fraction_widened(a_lo, a_hi, ob, inc):
+    """The formula :func:`widened` replaced, in ``Fraction``."""
+    widen = (4 * (F(max(abs(a_lo), abs(a_hi))) + ob) + TINY) * ULP
+    if inc:
+        widen += F(inc)
+    return F(math.floor((F(a_lo) - widen) * GRID), GRID), F(math.ceil((F(a_hi) + widen) * GRID), GRID)
+
+
+@settings(max_examples=1500, deadline=None, derandomize=True)
+@given(doubles, doubles, offset_bounds, incs)
+def test_widened_is_the_fraction_formula(x, y, ob, inc):
+    a_lo, a_hi = min(x, y), max(x, y)
+    assert widened(a_lo, a_hi, ob, inc) == fraction_widened(a_lo, a_hi, ob, inc)
 
 
 steps = st.sampled_from([0.0, 1e-7, 2.9e-7, 2.9999999e-7, 3e-7, 3.0000001e-7, 3.1e-7, 6e-7, 6.1e-7, 1e-3, 7.0])

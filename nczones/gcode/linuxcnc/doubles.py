@@ -391,15 +391,13 @@ class DoublePath:
                 begin = max(first - 1, f) - self.row0
                 end = last + 1 - self.row0
                 part = col[begin:end] if begin > 0 or end < len(col) else col
-                a_lo, a_hi = min(part), max(part)
-                top = max(abs(a_lo), abs(a_hi))
-                widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
-                if self.inc_bound and self.inc_bound[a]:
-                    widen += Fraction(self.inc_bound[a])
-                # outwards to multiples of 2**-60 mm (small denominators for the exact test)
-                bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
-                bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
-            lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
+                # widened, outwards to multiples of 2**-60 mm (small denominators for the exact test)
+                inc = self.inc_bound[a] if self.inc_bound else 0.0
+                bounds += widened(min(part), max(part), self.offset_bound[a], inc)
+            if len(bounds) == 2:  # the widened rows' alone
+                lo[self.axes[a]], hi[self.axes[a]] = bounds
+            else:
+                lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
         if self.arc_rows:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
@@ -544,6 +542,35 @@ _ARC_BUFFER = 4096
 _ARC_ITEMS = 9
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
+
+
+def widened(a_lo: float, a_hi: float, offset_bound: Fraction, inc: float) -> tuple[Fraction, Fraction]:
+    """``a_lo - w`` rounded down and ``a_hi + w`` rounded up to multiples of ``2**-60`` (:data:`_GRID`), exactly:
+    ``w = (4 (top + offset_bound) + 2**-8) 2**-52 + inc``, ``top = max(|a_lo|, |a_hi|)``, the rows' widening
+    (:meth:`DoublePath.enclosure`, the bound of the module's docstring).
+
+    In integers, not ``Fraction``: times ``2**60``, ``w`` is ``2**10 (top + offset_bound) + 1 + inc 2**60``; each
+    float is ``n / 2**e`` (``as_integer_ratio``), so all of them over the largest of their denominators ``p``,
+    times the offset bound's denominator, are integers, and the roundings are floor divisions.
+
+    >>> widened(0.1, 0.3, Fraction(0), 0.0) == (
+    ...     Fraction(math.floor((Fraction(0.1) - (4 * Fraction(0.3) + _TINY) * _ULP) * _GRID), _GRID),
+    ...     Fraction(math.ceil((Fraction(0.3) + (4 * Fraction(0.3) + _TINY) * _ULP) * _GRID), _GRID))
+    True
+    """
+    nl, dl = a_lo.as_integer_ratio()
+    nh, dh = a_hi.as_integer_ratio()
+    nt, dt = max(abs(a_lo), abs(a_hi)).as_integer_ratio()
+    ni, di = inc.as_integer_ratio()
+    p = max(dl, dh, dt, di)  # powers of two: each divides the largest
+    no, do = offset_bound.numerator, offset_bound.denominator
+    den = p * do
+    w = ((nt * (p // dt) << 10) + p + (ni * (p // di) << 60)) * do + (no * p << 10)  # w 2**60 p do
+    lo = ((nl * (p // dl) << 60) * do - w) // den
+    hi = -((-((nh * (p // dh) << 60) * do + w)) // den)
+    return Fraction(lo, _GRID), Fraction(hi, _GRID)
+
+
 #: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
 _SLOT_MASKS = tuple(bytes(int(b == s) for b in range(256)) for s in range(3))
 
