@@ -1624,8 +1624,13 @@ def _polygon(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
 
 
 #: The simple-polygon check runs in Python (no numpy to import) while the sweep's candidate pairs (edges whose
-#: ranges of X overlap) number at most this many; numpy's vectorized sweep above it.
+#: ranges of X overlap) number at most ``PYTHON_PAIRS + PYTHON_PAIRS_PER_EDGE * n`` (``n`` edges); numpy's
+#: vectorized sweep above it.  An outline has a few pairs an edge, and there the two cost about the same
+#: (measured, poly45: a rippled circle of 10,000 vertices, 32,564 pairs, 52 ms in Python, 85 ms in numpy;
+#: 100,000 vertices, 330,152 pairs, 0.50 s and 0.46 s, numpy's import not counted); numpy is kept for
+#: outlines whose edges overlap in X by the many (a zigzag: some ``n**2 / 2`` pairs).
 PYTHON_PAIRS = 20_000
+PYTHON_PAIRS_PER_EDGE = 8
 
 
 def polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
@@ -1638,9 +1643,10 @@ def polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
     overlapping boxes, so the answer is the all-pairs answer; the pair named
     is the first in vertex order, as an all-pairs scan would name it.
     The work is ``O(n log n)`` plus the pairs whose X ranges overlap, which
-    for an outline is a few per edge.  Up to :data:`PYTHON_PAIRS` such pairs
-    the sweep runs in Python on the exact X ranges (:func:`_touching_pairs`),
-    above it in numpy (:func:`_touching_pairs_numpy`): the same pairs touch.
+    for an outline is a few per edge.  Up to some such pairs an edge
+    (:data:`PYTHON_PAIRS`) the sweep runs in Python on the exact X ranges
+    (:func:`_touching_pairs`), above that in numpy
+    (:func:`_touching_pairs_numpy`): the same pairs touch.
     """
     import math
 
@@ -1669,7 +1675,7 @@ def polygon_problem(vertices: list[tuple[Fraction, Fraction]]) -> str | None:
 def _touching_pairs(ints: list[tuple[int, int]]) -> list[tuple[int, int]] | None:
     """The pairs ``(i, j)``, ``i < j``, of edges (edge ``i``: vertex ``i`` to ``i + 1``) that meet other than at
     the vertex adjacent edges share (:func:`_segments_intersect`), in the integer vertices ``ints``; None when
-    more than :data:`PYTHON_PAIRS` pairs have overlapping ranges of X (then numpy's sweep is quicker).
+    more pairs have overlapping ranges of X than :data:`PYTHON_PAIRS` allows (then numpy's sweep is quicker).
 
     Sorted by their low X, edge ``k`` overlaps in X exactly the edges after it that start at or before its high
     X (``bisect``); of those, the pairs that overlap in Y too are tested: every touching pair is among them."""
@@ -1684,7 +1690,7 @@ def _touching_pairs(ints: list[tuple[int, int]]) -> list[tuple[int, int]] | None
     order = sorted(range(n), key=x_lo.__getitem__)
     lo_sorted = [x_lo[i] for i in order]
     reach = [bisect_right(lo_sorted, x_hi[order[k]]) for k in range(n)]  # sorted edges k+1 .. reach-1 overlap
-    if sum(r - k - 1 for k, r in enumerate(reach)) > PYTHON_PAIRS:
+    if sum(r - k - 1 for k, r in enumerate(reach)) > PYTHON_PAIRS + PYTHON_PAIRS_PER_EDGE * n:
         return None
     bad = []
     for k in range(n):

@@ -60,7 +60,7 @@ def both_sweeps(vertices):
     try:
         machine.PYTHON_PAIRS = 10**9
         by_python = polygon_problem(vertices)
-        machine.PYTHON_PAIRS = -1
+        machine.PYTHON_PAIRS = -(10**9)  # no pair allowed: numpy's
         by_numpy = polygon_problem(vertices)
     finally:
         machine.PYTHON_PAIRS = keep
