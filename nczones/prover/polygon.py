@@ -37,6 +37,7 @@ from fractions import Fraction
 from typing import Any, TypeVar
 
 from ..zones import PolygonZone
+from ..zones.model import segment_meets_open_box
 
 # not typing's: a type checker takes any TYPE_CHECKING for true; numpy loads with the grid (the fast path's)
 TYPE_CHECKING = False
@@ -116,9 +117,11 @@ class EdgeBoxes:
         ``floor(y0 unit)`` .. ``ceil(y1 unit)``: an edge that meets the box at some ``y*`` is listed in the
         band of ``floor(y*)``, which lies between them (:class:`EdgeBoxes`)."""
         u = self.unit
-        ix0, ix1 = -((-x0.numerator * u) // x0.denominator), (x1.numerator * u) // x1.denominator
-        fy0, cy1 = (y0.numerator * u) // y0.denominator, -((-y1.numerator * u) // y1.denominator)
-        iy0, iy1 = -((-y0.numerator * u) // y0.denominator), (y1.numerator * u) // y1.denominator
+        (nx0, dx0), (nx1, dx1) = x0.as_integer_ratio(), x1.as_integer_ratio()
+        (ny0, dy0), (ny1, dy1) = y0.as_integer_ratio(), y1.as_integer_ratio()
+        ix0, ix1 = -((-nx0 * u) // dx0), (nx1 * u) // dx1
+        fy0, cy1 = (ny0 * u) // dy0, -((-ny1 * u) // dy1)
+        iy0, iy1 = -((-ny0 * u) // dy0), (ny1 * u) // dy1
         b0, b1 = self.band(fy0), self.band(cy1)
         if b0 == b1:
             cand: Any = self.bands[b0]
@@ -129,15 +132,14 @@ class EdgeBoxes:
         x_lo, x_hi, y_lo, y_hi = self.x_lo, self.x_hi, self.y_lo, self.y_hi
         return [self.edges[i] for i in cand if x_lo[i] <= ix1 and x_hi[i] >= ix0 and y_lo[i] <= iy1 and y_hi[i] >= iy0]
 
-    def locate(self, q: Pt) -> int:
-        """:func:`locate`, in integers: ``q`` over its coordinates' common denominator ``d``, the edges times
-        ``d``; the crossing test ``q_x < x_cross`` is the sign of the cross product ``(b - a) x (q - a)``
+    def locate(self, xn: int, xd: int, yn: int, yd: int) -> int:
+        """:func:`locate` of the point ``(xn / xd, yn / yd)`` (``xd``, ``yd`` positive; any such fractions, not
+        only lowest terms), in integers: the point over its coordinates' common denominator ``d``, the edges
+        times ``d``; the crossing test ``q_x < x_cross`` is the sign of the cross product ``(b - a) x (q - a)``
         (times ``d``), which decides it for an edge going up and the other way for one going down."""
-        qx, qy = q
-        dx, dy = qx.denominator, qy.denominator
-        d = dx // math.gcd(dx, dy) * dy
-        u = qx.numerator * (d // dx) * self.unit
-        v = qy.numerator * (d // dy) * self.unit
+        d = xd // math.gcd(xd, yd) * yd
+        u = xn * (d // xd) * self.unit
+        v = yn * (d // yd) * self.unit
         inside = False
         for i in self.bands[self.band(v // d)]:
             ax, ay, bx, by = self.ints[i]
@@ -159,7 +161,7 @@ def edge_boxes(zone: PolygonZone) -> EdgeBoxes:
 def locate(zone: PolygonZone, q: Pt) -> int:
     """+1 strictly inside, 0 on the boundary, -1 outside (exact; the crossing number of a ray to +x, half-open
     rule: an edge counts when one end is above ``q`` and the other not; :meth:`EdgeBoxes.locate`)."""
-    return edge_boxes(zone).locate(q)
+    return edge_boxes(zone).locate(*q[0].as_integer_ratio(), *q[1].as_integer_ratio())
 
 
 def _meets(p0: Pt, r: Pt, a: Pt, b: Pt) -> list[Fraction]:
@@ -250,12 +252,14 @@ def box_fits(zone: PolygonZone, lo: Pt, hi: Pt) -> bool:
     """Does the closed box ``[lo, hi]`` (in the plane, margin and tool shift already applied) satisfy the
     polygon's plane part: inside ``P`` (allow), or meeting no interior point (forbid)?  Exact."""
     if lo[0] < hi[0] and lo[1] < hi[1]:
-        from ..zones.model import segment_meets_open_box
-
-        for a, b in edge_boxes(zone).near(lo[0], hi[0], lo[1], hi[1]):
+        eb = edge_boxes(zone)
+        for a, b in eb.near(lo[0], hi[0], lo[1], hi[1]):
             if segment_meets_open_box(a, b, lo, hi):
                 return False
-        where = locate(zone, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2))
+        # the centre, (lo + hi) / 2 on each axis as integers over 2 b d (no Fraction to normalize)
+        (a0, b0), (c0, d0) = lo[0].as_integer_ratio(), hi[0].as_integer_ratio()
+        (a1, b1), (c1, d1) = lo[1].as_integer_ratio(), hi[1].as_integer_ratio()
+        where = eb.locate(a0 * d0 + c0 * b0, 2 * b0 * d0, a1 * d1 + c1 * b1, 2 * b1 * d1)
         return where < 0 if zone.forbid else where > 0
     # a flat box is the segment between its corners
     return not plane_violation(zone, lo, hi, F0)
