@@ -32,17 +32,21 @@ between them is in or out as its midpoint is.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from fractions import Fraction
-from typing import Any, TypeVar
 
 from ..zones import PolygonZone
 from ..zones.model import segment_meets_open_box
 
-# not typing's: a type checker takes any TYPE_CHECKING for true; numpy loads with the grid (the fast path's)
+# not typing's (start-up, issue 36: no other module of a small verify imports typing): a type checker takes any
+# TYPE_CHECKING for true; numpy loads with the grid (the fast path's)
 TYPE_CHECKING = False
 if TYPE_CHECKING:
+    from collections.abc import Callable
+    from typing import Any, TypeVar
+
     import numpy as np
+
+    T = TypeVar("T")
 
 __all__ = ["EdgeBoxes", "PolygonGrid", "box_fits", "cached", "edge_boxes", "grid", "locate", "open_box_point",
            "plane_violation", "screen_rows"]
@@ -51,7 +55,6 @@ F0 = Fraction(0)
 F1 = Fraction(1)
 Pt = tuple[Fraction, Fraction]
 
-T = TypeVar("T")
 _CACHE: dict[tuple[int, int], tuple[PolygonZone, Any]] = {}
 _CACHE_SIZE = 32
 
