@@ -86,27 +86,30 @@ class EdgeBoxes:
     """
 
     def __init__(self, zone: PolygonZone):
-        self.edges = zone.edges()
         v = zone.vertices
-        unit = math.lcm(*{c.denominator for p in v for c in p})
+        self.edges = list(zip(v, v[1:] + v[:1]))  # zone.edges(), built in C
+        ratios = [(x.as_integer_ratio(), y.as_integer_ratio()) for x, y in v]
+        unit = math.lcm(*{d for (_, dx), (_, dy) in ratios for d in (dx, dy)})
         self.unit = unit
-        pts = [(x.numerator * (unit // x.denominator), y.numerator * (unit // y.denominator)) for x, y in v]
-        n = len(pts)
-        self.ints = [(*pts[i], *pts[(i + 1) % n]) for i in range(n)]
-        y_lo = [min(ay, by) for _, ay, _, by in self.ints]
-        y_hi = [max(ay, by) for _, ay, _, by in self.ints]
-        self.x_lo = [min(ax, bx) for ax, _, bx, _ in self.ints]
-        self.x_hi = [max(ax, bx) for ax, _, bx, _ in self.ints]
-        self.y_lo, self.y_hi = y_lo, y_hi
-        self.y0 = min(y_lo)
-        span = max(y_hi) - self.y0 + 1
+        xs = [nx * (unit // dx) for (nx, dx), _ in ratios]
+        ys = [ny * (unit // dy) for _, (ny, dy) in ratios]
+        xb, yb = xs[1:] + xs[:1], ys[1:] + ys[:1]
+        n = len(xs)
+        self.ints = list(zip(xs, ys, xb, yb))
+        self.x_lo, self.x_hi = list(map(min, xs, xb)), list(map(max, xs, xb))
+        self.y_lo, self.y_hi = y_lo, y_hi = list(map(min, ys, yb)), list(map(max, ys, yb))
+        self.y0 = y0 = min(y_lo)
+        span = max(y_hi) - y0 + 1
         # n bands at most; wider when the edges are tall, so the lists hold at most 4 n + 2 n entries
-        self.width = max(1, -(-span // n), -(-sum(h - lo for lo, h in zip(y_lo, y_hi)) // (4 * n)))
-        count = -(-span // self.width)
-        self.bands: list[list[int]] = [[] for _ in range(count)]
-        for i in range(n):
-            for k in range(self.band(y_lo[i]), self.band(y_hi[i]) + 1):
-                self.bands[k].append(i)
+        self.width = w = max(1, -(-span // n), -(-(sum(y_hi) - sum(y_lo)) // (4 * n)))
+        self.bands: list[list[int]] = [[] for _ in range(-(-span // w))]
+        for i, lo, hi in zip(range(n), y_lo, y_hi):  # every y is in the bands' range: no clamping
+            b0, b1 = (lo - y0) // w, (hi - y0) // w
+            if b0 == b1:
+                self.bands[b0].append(i)
+            else:
+                for k in range(b0, b1 + 1):
+                    self.bands[k].append(i)
 
     def band(self, y: int) -> int:
         """The band of the integer ``y`` (in units of ``1 / unit``), clamped to the bands there are."""
