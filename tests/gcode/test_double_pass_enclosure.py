@@ -21,6 +21,7 @@ from hypothesis import strategies as st
 from nczones.gcode.linuxcnc.doubles import DoublePath, widened
 from nczones.motion import DROPPED_BELOW
 from nczones.prover.doubles import may_be_zero
+from tests.sizes import examples
 
 ULP, TINY, GRID = F(1, 2**52), F(1, 2**8), 2**60
 
@@ -39,7 +40,7 @@ def fraction_widened(a_lo, a_hi, ob, inc):
     return F(math.floor((F(a_lo) - widen) * GRID), GRID), F(math.ceil((F(a_hi) + widen) * GRID), GRID)
 
 
-@settings(max_examples=1500, deadline=None, derandomize=True)
+@settings(max_examples=examples(400, 3000), deadline=None, derandomize=True)
 @given(doubles, doubles, offset_bounds, incs)
 def test_widened_is_the_fraction_formula(x, y, ob, inc):
     a_lo, a_hi = min(x, y), max(x, y)
@@ -75,7 +76,7 @@ def row_box(path, r):
     return path.enclosure(r + 1, r)
 
 
-@settings(max_examples=600, deadline=None, derandomize=True)
+@settings(max_examples=examples(200, 1200), deadline=None, derandomize=True)
 @given(paths(), st.data())
 def test_apart_is_sound_and_may_be_zero_is_the_boxes_answer(path, data):
     k = data.draw(st.integers(1, path.motions))
@@ -94,7 +95,7 @@ def test_apart_answers_at_once_for_rows_well_apart():
     assert not path.apart(2, 3, DROPPED_BELOW)
 
 
-@settings(max_examples=400, deadline=None, derandomize=True)
+@settings(max_examples=examples(150, 800), deadline=None, derandomize=True)
 @given(paths(), st.data())
 def test_the_rows_box_holds_the_corners_box(path, data):
     k = data.draw(st.integers(1, path.motions - 1))

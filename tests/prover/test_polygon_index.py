@@ -21,6 +21,7 @@ from nczones.prover import polygon as pg
 from nczones.zones import PolygonZone
 from nczones.zones.model import segment_meets_open_box
 from tests.prover.test_polygon_screen import star_polygons
+from tests.sizes import examples
 
 
 def brute_locate(zone, q):
@@ -93,7 +94,7 @@ def points_about(draw, zone):
     return lo_x + s * w, lo_y + (t * 3 / 2 - F(1, 4)) * h
 
 
-@settings(max_examples=200, deadline=None, derandomize=True)
+@settings(max_examples=examples(80, 600), deadline=None, derandomize=True)
 @given(polygons, st.data())
 def test_locate_agrees_with_every_edge_in_fractions(zone, data):
     for _ in range(12):
@@ -101,7 +102,7 @@ def test_locate_agrees_with_every_edge_in_fractions(zone, data):
         assert pg.locate(zone, q) == brute_locate(zone, q), q
 
 
-@settings(max_examples=150, deadline=None, derandomize=True)
+@settings(max_examples=examples(60, 400), deadline=None, derandomize=True)
 @given(polygons, st.data())
 def test_near_is_exactly_the_edges_whose_boxes_meet(zone, data):
     for _ in range(8):
@@ -113,7 +114,7 @@ def test_near_is_exactly_the_edges_whose_boxes_meet(zone, data):
         assert pg.edge_boxes(zone).near(x0, x1, y0, y1) == brute_near(zone, x0, x1, y0, y1)
 
 
-@settings(max_examples=150, deadline=None, derandomize=True)
+@settings(max_examples=examples(60, 400), deadline=None, derandomize=True)
 @given(polygons, st.data())
 def test_box_fits_agrees_with_all_edges(zone, data):
     for _ in range(6):
