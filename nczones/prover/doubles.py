@@ -142,6 +142,9 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
     ``P1 + a (M1 - P1) + b (M2 - P1)`` (``a, b`` in [0, 1], ``M1``, ``M2`` the midpoints of the motions,
     ``P0``, ``P1``, ``P2`` rows ``k - 1``, ``k``, ``k + 1``): in the box of ``P1``, ``M1``, ``M2`` and
     ``(P0 + P2) / 2``, each bounded with the rows' boxes (``path.enclosure(r + 1, r)`` is row r's alone).
+    Those points are convex combinations of ``P0``, ``P1``, ``P2``, so that box lies in the box of the three
+    rows' boxes, which ``path.enclosure(k, k + 1)`` (rows ``k - 1``..``k + 1``) holds: when that one fits
+    (one enclosure, one test), so does the corner; else the corner's own box is tried.
 
     A motion of length 0 is dropped by LinuxCNC's canonical layer: the corner is then between the motions
     around it (specs/path-modes.md §1), whose midpoints rows ``k - 1``..``k + 1`` do not hold.  When motion
@@ -176,6 +179,10 @@ def _corner_fits(path: Any, allowed: Any, margin: Fraction, k: int) -> bool:
             return False  # an arc beside a dropped motion: the full path's
         lo, hi = path.enclosure(first, last)
         return box_fits(allowed, lo, hi, margin, Fraction(0))
+    # first the box of rows k-1..k+1 (one enclosure): it holds each row's box, so the corner's box below
+    lo, hi = path.enclosure(k, k + 1)
+    if box_fits(allowed, lo, hi, margin, Fraction(0)):
+        return True
     (l0, h0), (l1, h1), (l2, h2) = (path.enclosure(r + 1, r) for r in (k - 1, k, k + 1))
     lo = {a: min(l1[a], (l0[a] + l1[a]) / 2, (l1[a] + l2[a]) / 2, (l0[a] + l2[a]) / 2) for a in l1}
     hi = {a: max(h1[a], (h0[a] + h1[a]) / 2, (h1[a] + h2[a]) / 2, (h0[a] + h2[a]) / 2) for a in h1}
@@ -241,7 +248,12 @@ def _reach_order(size: dict[str, Fraction], reach: bool) -> list[tuple[str, ...]
 
 def may_be_zero(path: Any, k: int) -> bool:
     """May motion ``k`` (rows ``k - 1`` and ``k``) of the double pass's ``path`` be dropped by LinuxCNC's planner
-    (length 0, or below :data:`~nczones.motion.DROPPED_BELOW`): are its two rows' boxes that close on every axis?"""
+    (length 0, or below :data:`~nczones.motion.DROPPED_BELOW`): are its two rows' boxes that close on every axis?
+    Rows whose doubles are far apart on an axis (:meth:`~nczones.gcode.linuxcnc.doubles.DoublePath.apart`) are
+    not, without the boxes; else the boxes are compared exactly."""
+    apart = getattr(path, "apart", None)
+    if apart is not None and apart(k - 1, k, DROPPED_BELOW):
+        return False  # farther apart on an axis than the boxes could make up (DoublePath.apart)
     (l0, h0), (l1, h1) = (path.enclosure(r + 1, r) for r in (k - 1, k))
     return all(l0[a] - h1[a] < DROPPED_BELOW and l1[a] - h0[a] < DROPPED_BELOW for a in l0)
 

@@ -2,10 +2,11 @@
 
 Two structures per polygon, each built once and kept (keyed by the zone):
 
-* :class:`EdgeBoxes` — the edges' bounding boxes in floats.  A float filter
-  that keeps every edge whose box overlaps a query box is sound: rounding to
-  nearest is monotone, so boxes whose exact ranges meet still meet in
-  floats.  The exact tests then run in rationals on the few edges left.
+* :class:`EdgeBoxes` — the edges in integers (the vertices times their
+  common denominator), filed in horizontal bands: the edges whose boxes meet
+  a query box are found exactly without numpy, and a point is located in
+  integer arithmetic over the edges of its band (no ``Fraction`` an edge).
+  The exact tests then run on the few edges found.
 * :class:`PolygonGrid` — a grid of square cells over the polygon's box, in
   integers (coordinates times ``L``, the common denominator of the vertices
   and of the motion's scale).  A cell is *boundary* when the closed cell
@@ -31,13 +32,21 @@ between them is in or out as its midpoint is.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from fractions import Fraction
-from typing import Any, TypeVar
-
-import numpy as np
 
 from ..zones import PolygonZone
+from ..zones.model import segment_meets_open_box
+
+# not typing's (start-up, issue 36: no other module of a small verify imports typing): a type checker takes any
+# TYPE_CHECKING for true; numpy loads with the grid (the fast path's)
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from collections.abc import Callable
+    from typing import Any, TypeVar
+
+    import numpy as np
+
+    T = TypeVar("T")
 
 __all__ = ["EdgeBoxes", "PolygonGrid", "box_fits", "cached", "edge_boxes", "grid", "locate", "open_box_point",
            "plane_violation", "screen_rows"]
@@ -46,7 +55,6 @@ F0 = Fraction(0)
 F1 = Fraction(1)
 Pt = tuple[Fraction, Fraction]
 
-T = TypeVar("T")
 _CACHE: dict[tuple[int, int], tuple[PolygonZone, Any]] = {}
 _CACHE_SIZE = 32
 
@@ -66,48 +74,100 @@ def cached(zone: PolygonZone, key: int, build: Callable[[], T]) -> T:
 
 
 class EdgeBoxes:
-    """The polygon's edges (exact) and their bounding boxes (floats, for filtering)."""
+    """The polygon's edges, exact, in integers and filed in horizontal bands (no numpy, no ``Fraction`` an edge).
+
+    The vertices times ``unit`` (the least common denominator of their coordinates) are integers; edge ``i``
+    (vertex ``i`` to ``i + 1``) is ``ints[i] = (ax, ay, bx, by)`` in those units.  The band of an integer ``y``
+    is ``(y - y0) // width`` clamped to ``0 .. len(bands) - 1``, nondecreasing in ``y``, and ``bands[k]`` lists
+    (ascending) every edge whose range of ``y`` holds an integer of band ``k``: an edge from its low ``y``'s band
+    to its high ``y``'s.  Invariant: an edge whose ``y`` range holds a real ``y*`` holds the integer
+    ``floor(y*)`` (its ends are integers), so it is listed in that integer's band.  The width is chosen so
+    that the lists hold a few entries an edge in all (at most about ``6 n``), whatever the polygon.
+    """
 
     def __init__(self, zone: PolygonZone):
-        self.edges = zone.edges()
         v = zone.vertices
-        fx = np.array([float(p[0]) for p in v])
-        fy = np.array([float(p[1]) for p in v])
-        nx, ny = np.roll(fx, -1), np.roll(fy, -1)
-        self.x_lo, self.x_hi = np.minimum(fx, nx), np.maximum(fx, nx)
-        self.y_lo, self.y_hi = np.minimum(fy, ny), np.maximum(fy, ny)
+        self.edges = list(zip(v, v[1:] + v[:1]))  # zone.edges(), built in C
+        ratios = [(x.as_integer_ratio(), y.as_integer_ratio()) for x, y in v]
+        unit = math.lcm(*{d for (_, dx), (_, dy) in ratios for d in (dx, dy)})
+        self.unit = unit
+        xs = [nx * (unit // dx) for (nx, dx), _ in ratios]
+        ys = [ny * (unit // dy) for _, (ny, dy) in ratios]
+        xb, yb = xs[1:] + xs[:1], ys[1:] + ys[:1]
+        n = len(xs)
+        self.ints = list(zip(xs, ys, xb, yb))
+        self.x_lo, self.x_hi = list(map(min, xs, xb)), list(map(max, xs, xb))
+        self.y_lo, self.y_hi = y_lo, y_hi = list(map(min, ys, yb)), list(map(max, ys, yb))
+        self.y0 = y0 = min(y_lo)
+        span = max(y_hi) - y0 + 1
+        # n bands at most; wider when the edges are tall, so the lists hold at most 4 n + 2 n entries
+        self.width = w = max(1, -(-span // n), -(-(sum(y_hi) - sum(y_lo)) // (4 * n)))
+        self.bands: list[list[int]] = [[] for _ in range(-(-span // w))]
+        for i, lo, hi in zip(range(n), y_lo, y_hi):  # every y is in the bands' range: no clamping
+            b0, b1 = (lo - y0) // w, (hi - y0) // w
+            if b0 == b1:
+                self.bands[b0].append(i)
+            else:
+                for k in range(b0, b1 + 1):
+                    self.bands[k].append(i)
+
+    def band(self, y: int) -> int:
+        """The band of the integer ``y`` (in units of ``1 / unit``), clamped to the bands there are."""
+        return min(max((y - self.y0) // self.width, 0), len(self.bands) - 1)
 
     def near(self, x0: Fraction, x1: Fraction, y0: Fraction, y1: Fraction) -> list[tuple[Pt, Pt]]:
-        """Every edge whose closed box meets the closed box ``[x0, x1] x [y0, y1]`` (and maybe a few more)."""
-        fx0, fx1, fy0, fy1 = float(x0), float(x1), float(y0), float(y1)
-        hit = np.flatnonzero((self.x_lo <= fx1) & (self.x_hi >= fx0) & (self.y_lo <= fy1) & (self.y_hi >= fy0))
-        return [self.edges[i] for i in hit.tolist()]
+        """Every edge whose closed box meets the closed box ``[x0, x1] x [y0, y1]`` (exactly those), in order.
+
+        An edge's ends are integers in units of ``1 / unit``: its range ``[lo, hi]`` meets ``[x0, x1]`` iff
+        ``lo <= floor(x1 unit)`` and ``hi >= ceil(x0 unit)``.  The bands searched are those of
+        ``floor(y0 unit)`` .. ``ceil(y1 unit)``: an edge that meets the box at some ``y*`` is listed in the
+        band of ``floor(y*)``, which lies between them (:class:`EdgeBoxes`)."""
+        u = self.unit
+        (nx0, dx0), (nx1, dx1) = x0.as_integer_ratio(), x1.as_integer_ratio()
+        (ny0, dy0), (ny1, dy1) = y0.as_integer_ratio(), y1.as_integer_ratio()
+        ix0, ix1 = -((-nx0 * u) // dx0), (nx1 * u) // dx1
+        fy0, cy1 = (ny0 * u) // dy0, -((-ny1 * u) // dy1)
+        iy0, iy1 = -((-ny0 * u) // dy0), (ny1 * u) // dy1
+        b0, b1 = self.band(fy0), self.band(cy1)
+        if b0 == b1:
+            cand: Any = self.bands[b0]
+        elif 2 * (b1 - b0) >= len(self.bands):
+            cand = range(len(self.ints))
+        else:
+            cand = sorted({i for k in range(b0, b1 + 1) for i in self.bands[k]})
+        x_lo, x_hi, y_lo, y_hi = self.x_lo, self.x_hi, self.y_lo, self.y_hi
+        return [self.edges[i] for i in cand if x_lo[i] <= ix1 and x_hi[i] >= ix0 and y_lo[i] <= iy1 and y_hi[i] >= iy0]
+
+    def locate(self, xn: int, xd: int, yn: int, yd: int) -> int:
+        """:func:`locate` of the point ``(xn / xd, yn / yd)`` (``xd``, ``yd`` positive; any such fractions, not
+        only lowest terms), in integers: the point over its coordinates' common denominator ``d``, the edges
+        times ``d``; the crossing test ``q_x < x_cross`` is the sign of the cross product ``(b - a) x (q - a)``
+        (times ``d``), which decides it for an edge going up and the other way for one going down."""
+        d = xd // math.gcd(xd, yd) * yd
+        u = xn * (d // xd) * self.unit
+        v = yn * (d // yd) * self.unit
+        inside = False
+        for i in self.bands[self.band(v // d)]:
+            ax, ay, bx, by = self.ints[i]
+            ayd, byd = ay * d, by * d
+            if (ayd < v and byd < v) or (ayd > v and byd > v):
+                continue  # the edge misses the line y = q_y
+            s = (bx - ax) * (v - ayd) - (by - ay) * (u - ax * d)
+            if s == 0 and min(ax, bx) * d <= u <= max(ax, bx) * d:
+                return 0
+            if (ayd > v) != (byd > v) and (s > 0) == (by > ay):
+                inside = not inside
+        return 1 if inside else -1
 
 
 def edge_boxes(zone: PolygonZone) -> EdgeBoxes:
     return cached(zone, 0, lambda: EdgeBoxes(zone))
 
 
-def _cross(o: Pt, a: Pt, b: Pt) -> Fraction:
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
 def locate(zone: PolygonZone, q: Pt) -> int:
-    """+1 strictly inside, 0 on the boundary, -1 outside (exact; the crossing number of a ray to +x)."""
-    eb = edge_boxes(zone)
-    fy = float(q[1])
-    inside = False
-    for i in np.flatnonzero((eb.y_lo <= fy) & (eb.y_hi >= fy)).tolist():
-        a, b = eb.edges[i]
-        if (a[1] < q[1] and b[1] < q[1]) or (a[1] > q[1] and b[1] > q[1]):
-            continue
-        if _cross(a, b, q) == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]):
-            return 0
-        if (a[1] > q[1]) != (b[1] > q[1]):
-            x_cross = a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])
-            if q[0] < x_cross:
-                inside = not inside
-    return 1 if inside else -1
+    """+1 strictly inside, 0 on the boundary, -1 outside (exact; the crossing number of a ray to +x, half-open
+    rule: an edge counts when one end is above ``q`` and the other not; :meth:`EdgeBoxes.locate`)."""
+    return edge_boxes(zone).locate(*q[0].as_integer_ratio(), *q[1].as_integer_ratio())
 
 
 def _meets(p0: Pt, r: Pt, a: Pt, b: Pt) -> list[Fraction]:
@@ -198,12 +258,14 @@ def box_fits(zone: PolygonZone, lo: Pt, hi: Pt) -> bool:
     """Does the closed box ``[lo, hi]`` (in the plane, margin and tool shift already applied) satisfy the
     polygon's plane part: inside ``P`` (allow), or meeting no interior point (forbid)?  Exact."""
     if lo[0] < hi[0] and lo[1] < hi[1]:
-        from ..zones.model import segment_meets_open_box
-
-        for a, b in edge_boxes(zone).near(lo[0], hi[0], lo[1], hi[1]):
+        eb = edge_boxes(zone)
+        for a, b in eb.near(lo[0], hi[0], lo[1], hi[1]):
             if segment_meets_open_box(a, b, lo, hi):
                 return False
-        where = locate(zone, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2))
+        # the centre, (lo + hi) / 2 on each axis as integers over 2 b d (no Fraction to normalize)
+        (a0, b0), (c0, d0) = lo[0].as_integer_ratio(), hi[0].as_integer_ratio()
+        (a1, b1), (c1, d1) = lo[1].as_integer_ratio(), hi[1].as_integer_ratio()
+        where = eb.locate(a0 * d0 + c0 * b0, 2 * b0 * d0, a1 * d1 + c1 * b1, 2 * b1 * d1)
         return where < 0 if zone.forbid else where > 0
     # a flat box is the segment between its corners
     return not plane_violation(zone, lo, hi, F0)
@@ -280,6 +342,8 @@ class PolygonGrid:
     """
 
     def __init__(self, zone: PolygonZone, unit: int):
+        import numpy as np
+
         self.unit = unit
         ints = [(int(x * unit), int(y * unit)) for x, y in zone.vertices]
         xs = [p[0] for p in ints]
@@ -353,9 +417,12 @@ def _sat(cells: np.ndarray) -> np.ndarray:
     Rows summed first (contiguous), then the rows accumulated in place: some twice as fast on the 1,026 x 1,026
     grid as two ``cumsum`` into new ``int64`` arrays.
 
+    >>> import numpy as np
     >>> _sat(np.array([[True, False], [True, True]])).tolist()
     [[0, 0, 0], [0, 1, 1], [0, 2, 3]]
     """
+    import numpy as np
+
     out = np.zeros((cells.shape[0] + 1, cells.shape[1] + 1), dtype=np.int32)  # a grid has < 2**31 cells
     np.cumsum(cells, axis=1, dtype=np.int32, out=out[1:, 1:])
     np.add.accumulate(out, axis=0, out=out)
@@ -372,6 +439,8 @@ def screen_rows(zone: PolygonZone, scale: int, lo_a: np.ndarray, hi_a: np.ndarra
                 hi_b: np.ndarray) -> Any:
     """Rows whose closed boxes (plane part, ``int64`` at ``10**scale``) the grid proves: inside the polygon
     (allow) or missing it (forbid).  False means "not proved here", never "violates"."""
+    import numpy as np
+
     g = grid(zone, scale)
     k = g.unit // 10**scale
     ok = np.zeros(lo_a.shape, dtype=bool)

@@ -429,3 +429,40 @@ def test_the_console_script_raises_the_threshold_before_the_imports(tmp_path, sc
     assert threshold == (cli.YOUNG_OBJECTS if raised else 700)
     # raised: at most the one collection finding the package may set off; else one every few modules
     assert collections <= 1 if raised else collections >= 5
+
+
+def test_a_polygon_zone_through_the_double_pass_loads_no_numpy(tmp_path):
+    # issue 36 (poly45): a plain program of 1,000 short moves inside a 200-vertex outline is proved by the double
+    # pass; the simple-polygon check and the exact polygon tier (prover/polygon.py) run in Python integers, so
+    # numpy (only the vectorized screen's) is not imported
+    import math
+    import random
+
+    verts = []
+    for i in range(200):
+        th = 2 * math.pi * i / 200
+        r = 100 + 3 * math.sin(37 * th)
+        verts.append(f'["{r * math.cos(th):.4f}", "{r * math.sin(th):.4f}"]')
+    machine = tmp_path / "poly.toml"
+    machine.write_text('[machine]\naxes = ["X", "Y"]\nrapid_mode = "linear"\n[machine.rapid]\nX = "10000"\n'
+                       'Y = "10000"\n[machine.reference]\nX = "80"\nY = "0"\n[[zones]]\nname = "outline"\n'
+                       'kind = "polygon"\nplane = ["X", "Y"]\nvertices = [' + ", ".join(verts) + "]\n")
+    rnd = random.Random(0)
+    lines = ["G21 G90 G17", "G1 F1000", "X80 Y0"]
+    x, y = 80.0, 0.0
+    while len(lines) < 1003:  # a walk of short moves between radius 60 and 95 (each motion's box fits)
+        nx, ny = x + rnd.uniform(-2, 2), y + rnd.uniform(-2, 2)
+        if 60 < math.hypot(nx, ny) < 95:
+            x, y = nx, ny
+            lines.append(f"X{x:.3f} Y{y:.3f}")
+    program = tmp_path / "walk.ngc"
+    program.write_text("\n".join(lines) + "\nM2\n")
+    code = (f"import sys, json\nfrom nczones.cli import main\n"
+            f"code = main(['verify', {str(program)!r}, '--machine', {str(machine)!r}, '--format', 'json'])\n"
+            "print(json.dumps([code, 'numpy' in sys.modules, 'nczones.prover.polygon' in sys.modules]))")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT)
+    assert r.returncode == 0, r.stderr
+    report = json.loads(r.stdout[:r.stdout.rindex("\n[")])
+    assert report["verdict"] == "safe", report["stats"]
+    assert report["stats"].get("double_pass_boxes", 0) > 0, report["stats"]
+    assert json.loads(r.stdout.splitlines()[-1]) == [0, False, True]

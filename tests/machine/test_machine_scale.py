@@ -3,7 +3,8 @@
 * The simple-polygon check (a sweep over edges whose boxes overlap, exact in
   integers) gives the all-pairs check's answer, message included, on random
   small polygons full of touching, overlapping and crossing edges, on large
-  coordinates (Python integers instead of ``int64``) and on mixed decimals.
+  coordinates (Python integers instead of ``int64``) and on mixed decimals:
+  both of its sweeps, the Python one (few candidate pairs) and numpy's.
 * Decimal text read on the fast path gives the ``Decimal`` path's value and
   diagnostics.
 * Diagnostics in a long stepped table still point at the region's line.
@@ -18,6 +19,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from nczones import machine
 from nczones.errors import MachineFileError
 from nczones.machine import (
     _Reader,
@@ -52,10 +54,24 @@ def all_pairs_problem(vertices):
 coords = st.builds(F, st.integers(-3, 3), st.sampled_from([1, 2, 10]))
 
 
+def both_sweeps(vertices):
+    """``polygon_problem`` by the Python sweep and by numpy's (:data:`nczones.machine.PYTHON_PAIRS` set so)."""
+    keep = machine.PYTHON_PAIRS
+    try:
+        machine.PYTHON_PAIRS = 10**9
+        by_python = polygon_problem(vertices)
+        machine.PYTHON_PAIRS = -(10**9)  # no pair allowed: numpy's
+        by_numpy = polygon_problem(vertices)
+    finally:
+        machine.PYTHON_PAIRS = keep
+    return by_python, by_numpy
+
+
 @settings(max_examples=600, deadline=None)
 @given(st.lists(st.tuples(coords, coords), min_size=3, max_size=9))
 def test_sweep_agrees_with_all_pairs(vertices):
-    assert polygon_problem(vertices) == all_pairs_problem(vertices)
+    want = all_pairs_problem(vertices)
+    assert both_sweeps(vertices) == (want, want)
 
 
 @settings(max_examples=150, deadline=None)
@@ -63,7 +79,8 @@ def test_sweep_agrees_with_all_pairs(vertices):
        st.sampled_from([F(10**12), F(1, 10**25), F(3, 8)]))
 def test_sweep_agrees_on_large_and_fine_coordinates(points, unit):
     vertices = [(x * unit + F(10**5), y * unit) for x, y in points]  # 10**12 units: Python integers
-    assert polygon_problem(vertices) == all_pairs_problem(vertices)
+    want = all_pairs_problem(vertices)
+    assert both_sweeps(vertices) == (want, want)
 
 
 def test_sweep_names_the_first_pair_of_many():
@@ -72,8 +89,29 @@ def test_sweep_names_the_first_pair_of_many():
     for k in range(40):
         teeth += [(F(2 * k), F(0)), (F(2 * k), F(10)), (F(2 * k + 1), F(10)), (F(2 * k + 1), F(0))]
     vertices = [*teeth, (F(79), F(-5)), (F(0), F(5))]
-    assert polygon_problem(vertices) == all_pairs_problem(vertices)
-    assert polygon_problem(vertices) is not None
+    want = all_pairs_problem(vertices)
+    assert want is not None
+    assert both_sweeps(vertices) == (want, want)
+    assert polygon_problem(vertices) == want
+
+
+def test_an_outline_is_checked_without_numpy():
+    # a 200-vertex outline has a few candidate pairs an edge: the Python sweep decides it and numpy is not
+    # imported (tests/cli/test_startup.py); a zigzag whose 300 edges all overlap in X: numpy's sweep
+    import subprocess
+    import sys
+
+    code = """import math, sys
+from fractions import Fraction as F
+from nczones.machine import polygon_problem
+outline = [(F(round(100 * math.cos(2 * math.pi * i / 200) * 10**4), 10**4),
+            F(round(100 * math.sin(2 * math.pi * i / 200) * 10**4), 10**4)) for i in range(200)]
+zigzag = [(F(100 * (k % 2)), F(k)) for k in range(300)] + [(F(-1), F(299)), (F(-1), F(0))]
+print(polygon_problem(outline), 'numpy' in sys.modules, polygon_problem(zigzag), 'numpy' in sys.modules)
+"""
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split() == ["None", "False", "None", "True"]
 
 
 texts = st.one_of(

@@ -391,18 +391,46 @@ class DoublePath:
                 begin = max(first - 1, f) - self.row0
                 end = last + 1 - self.row0
                 part = col[begin:end] if begin > 0 or end < len(col) else col
-                a_lo, a_hi = min(part), max(part)
-                top = max(abs(a_lo), abs(a_hi))
-                widen = (4 * (Fraction(top) + self.offset_bound[a]) + _TINY) * _ULP
-                if self.inc_bound and self.inc_bound[a]:
-                    widen += Fraction(self.inc_bound[a])
-                # outwards to multiples of 2**-60 mm (small denominators for the exact test)
-                bounds.append(Fraction(math.floor((Fraction(a_lo) - widen) * _GRID), _GRID))
-                bounds.append(Fraction(math.ceil((Fraction(a_hi) + widen) * _GRID), _GRID))
-            lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
+                # widened, outwards to multiples of 2**-60 mm (small denominators for the exact test)
+                inc = self.inc_bound[a] if self.inc_bound else 0.0
+                bounds += widened(min(part), max(part), self.offset_bound[a], inc)
+            if len(bounds) == 2:  # the widened rows' alone
+                lo[self.axes[a]], hi[self.axes[a]] = bounds
+            else:
+                lo[self.axes[a]], hi[self.axes[a]] = min(bounds), max(bounds)
         if self.arc_rows:
             self._arc_bounds(first, last, lo, hi)
         return lo, hi
+
+    def apart(self, r0: int, r1: int, gap: Fraction) -> bool:
+        """Are rows ``r0`` and ``r1`` (``row0 <= r0``, numbered as for :meth:`enclosure`) more than ``gap`` apart on
+        some axis, their boxes ``enclosure(r + 1, r)`` compared, as their doubles show at once?  False: not
+        shown (compare the boxes).
+
+        Row ``r``'s box on an axis a motion computed lies within ``w_r + 2**-60`` of its double ``x_r``:
+        ``w_r = (4 (|x_r| + offset_bound) + 2**-8) 2**-52 + inc_bound``, :meth:`enclosure`'s widening, then
+        outwards to the ``2**-60`` grid.  So the two boxes are at least ``|x_0 - x_1| - w_0 - w_1 - 2**-59``
+        apart, more than ``gap`` when ``|x_0 - x_1|`` exceeds ``gap + w_0 + w_1 + 2**-59``; the test asks for
+        twice that bound evaluated in floats (each term within a relative ``2**-50`` of its value, the
+        difference ``|x_0 - x_1|`` within ``2**-53`` of its own: the factor 2 covers them; an infinite or NaN
+        bound shows nothing).  An axis at its exact start position in either row (no widening) is not tried.
+
+        >>> p = DoublePath(("X",), (array("d", [0.0, 0.1, 0.1, 0.3]),), (Fraction(0),), 3, 3, 0, 3, (Fraction(0),), (1,))
+        >>> p.apart(1, 3, Fraction(1, 20)), p.apart(1, 2, Fraction(0)), p.apart(0, 1, Fraction(0))
+        (True, False, False)
+        """
+        tiny2 = 2.0**-7 * 2.0**-52 + 2.0**-59  # two rows' 2**-8 ulp and grid steps
+        for a, col in enumerate(self.columns):
+            f = self.first_row[a]
+            if f == 0 or r0 < f:
+                continue
+            x0, x1 = col[r0 - self.row0], col[r1 - self.row0]
+            inc = self.inc_bound[a] if self.inc_bound else 0.0
+            bound = float(gap) + 4.0 * (abs(x0) + abs(x1) + 2.0 * float(self.offset_bound[a])) * 2.0**-52 \
+                + tiny2 + 2.0 * inc
+            if abs(x0 - x1) > 2.0 * bound:
+                return True
+        return False
 
     def reach(self, first: int, last: int, names: Any = None) -> dict[str, Fraction] | None:
         """Per axis of ``names`` (default all), a bound of how far a blended corner between two of motions
@@ -514,6 +542,35 @@ _ARC_BUFFER = 4096
 _ARC_ITEMS = 9
 _TINY = Fraction(1, 2**8)  # widens by at least 2**-60 mm: more than any subnormal's rounding
 _GRID = 2**60
+
+
+def widened(a_lo: float, a_hi: float, offset_bound: Fraction, inc: float) -> tuple[Fraction, Fraction]:
+    """``a_lo - w`` rounded down and ``a_hi + w`` rounded up to multiples of ``2**-60`` (:data:`_GRID`), exactly:
+    ``w = (4 (top + offset_bound) + 2**-8) 2**-52 + inc``, ``top = max(|a_lo|, |a_hi|)``, the rows' widening
+    (:meth:`DoublePath.enclosure`, the bound of the module's docstring).
+
+    In integers, not ``Fraction``: times ``2**60``, ``w`` is ``2**10 (top + offset_bound) + 1 + inc 2**60``; each
+    float is ``n / 2**e`` (``as_integer_ratio``), so all of them over the largest of their denominators ``p``,
+    times the offset bound's denominator, are integers, and the roundings are floor divisions.
+
+    >>> widened(0.1, 0.3, Fraction(0), 0.0) == (
+    ...     Fraction(math.floor((Fraction(0.1) - (4 * Fraction(0.3) + _TINY) * _ULP) * _GRID), _GRID),
+    ...     Fraction(math.ceil((Fraction(0.3) + (4 * Fraction(0.3) + _TINY) * _ULP) * _GRID), _GRID))
+    True
+    """
+    nl, dl = a_lo.as_integer_ratio()
+    nh, dh = a_hi.as_integer_ratio()
+    nt, dt = max(abs(a_lo), abs(a_hi)).as_integer_ratio()
+    ni, di = inc.as_integer_ratio()
+    p = max(dl, dh, dt, di)  # powers of two: each divides the largest
+    no, do = offset_bound.numerator, offset_bound.denominator
+    den = p * do
+    w = ((nt * (p // dt) << 10) + p + (ni * (p // di) << 60)) * do + (no * p << 10)  # w 2**60 p do
+    lo = ((nl * (p // dl) << 60) * do - w) // den
+    hi = -((-((nh * (p // dh) << 60) * do + w)) // den)
+    return Fraction(lo, _GRID), Fraction(hi, _GRID)
+
+
 #: Per plane slot s: the bytes table that maps s to 1 and every other slot to 0 (:meth:`DoublePath._arc_bounds`).
 _SLOT_MASKS = tuple(bytes(int(b == s) for b in range(256)) for s in range(3))
 
