@@ -17,16 +17,18 @@ meeting no forbid zone's interior).  ``d = 0`` is plain membership.
 from __future__ import annotations
 
 import enum
-from collections.abc import Mapping
+import math
+from collections.abc import Mapping, Sequence
 from fractions import Fraction
 
 from ..exact import max_bound, min_bound
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 
 __all__ = [
     "ZonePoint",
     "Region",
     "SteppedZone",
+    "StepTable",
     "BoxZone",
     "PolygonZone",
     "Zone",
@@ -37,18 +39,39 @@ __all__ = [
     "tip_shifted",
 ]
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
+
 Point = Mapping[str, Fraction]
 _ZERO = Fraction(0)
 
 
-def _bisect_left(a: tuple[Fraction, ...], x: Fraction) -> int:
+def _bisect_left(a: Sequence[Any], x: Any) -> int:
     """:func:`bisect.bisect_left`, imported at the first search (a machine without stepped zones makes none, and
     ``_bisect`` is a C extension to load at start-up, boot44); the name is then the function itself."""
-    global _bisect_left
-    from bisect import bisect_left
+    global _bisect_left, _bisect_right
+    from bisect import bisect_left, bisect_right
 
-    _bisect_left = bisect_left
+    _bisect_left, _bisect_right = bisect_left, bisect_right
     return bisect_left(a, x)
+
+
+def _bisect_right(a: Sequence[Any], x: Any) -> int:
+    """:func:`bisect.bisect_right`, imported at the first search (as :func:`_bisect_left`)."""
+    _bisect_left((), 0)
+    return _bisect_right(a, x)
+
+
+def _floor_times(q: Fraction, den: int) -> int:
+    """``floor(q * den)`` exactly, in integers."""
+    return q.numerator * den // q.denominator
+
+
+def _ceil_times(q: Fraction, den: int) -> int:
+    """``ceil(q * den)`` exactly, in integers."""
+    return -(-q.numerator * den // q.denominator)
 
 
 class ZonePoint(enum.Enum):
@@ -86,6 +109,41 @@ class Region:
     max: Fraction | None = None
 
 
+class StepTable:
+    """A stepped table's numbers as integers over one common denominator (made once per zone, on demand).
+
+    ``den`` is the least common multiple of the denominators of ``from``, every ``upto``, ``min`` and ``max``
+    (a power of ten for a machine file's decimals); ``start``, ``uptos``, ``mins`` and ``maxs`` are those
+    values times ``den``, exact integers, ``mins[i]`` / ``maxs[i]`` being ``low`` / ``high`` where region
+    ``i`` has no ``min`` / ``max``.  ``low`` is less and ``high`` greater than every finite value of the table,
+    so the largest ``min`` of a run of regions is ``low`` only when none of them has one (and likewise the
+    smallest ``max``), and a region with one missing bound never reads as flat (``mins[i] == maxs[i]``).
+
+    A rational ``q`` compares with an entry ``k / den`` as ``q * den`` with ``k``: ``q >= k / den`` exactly
+    when ``floor(q * den) >= k`` and ``q <= k / den`` exactly when ``ceil(q * den) <= k`` (``k`` an integer),
+    so one floor or ceiling per query bound turns every comparison with the table into one of integers.
+
+    A plain class with slots, not a dataclass: it is made only for a machine with a stepped zone, the first time
+    a proof asks (a dataclass costs every start-up its creation, boot44).
+    """
+
+    __slots__ = ("den", "start", "uptos", "mins", "maxs", "low", "high")
+
+    def __init__(self, zone: SteppedZone):
+        regions = zone.regions
+        lows = [r.min for r in regions]
+        highs = [r.max for r in regions]
+        values = [zone.start, *(r.upto for r in regions), *(v for v in lows if v is not None),
+                  *(v for v in highs if v is not None)]
+        den = self.den = math.lcm(*{v.denominator for v in values})
+        self.start = zone.start.numerator * (den // zone.start.denominator)
+        self.uptos = [r.upto.numerator * (den // r.upto.denominator) for r in regions]
+        scaled = [v.numerator * (den // v.denominator) for v in values]
+        low, high = self.low, self.high = min(scaled) - 1, max(scaled) + 1
+        self.mins = [low if v is None else v.numerator * (den // v.denominator) for v in lows]
+        self.maxs = [high if v is None else v.numerator * (den // v.denominator) for v in highs]
+
+
 @dataclass(frozen=True, slots=True)
 class SteppedZone:
     """A stepped limit-value table.
@@ -112,11 +170,76 @@ class SteppedZone:
     regions: tuple[Region, ...]
     forbid: bool = False
     point: ZonePoint = ZonePoint.MACHINE
+    # the table in integers, made at the first query that needs it (not an argument: replace() and
+    # translated() make a new zone, which makes its own; not compared, hashed or shown: a function of the rest)
+    _steps: StepTable | None = field(default=None, init=False, repr=False, compare=False)
     kind = "stepped"  # a class attribute, not a field (unannotated: no typing.ClassVar to import at start-up)
 
     @property
     def axes(self) -> tuple[str, ...]:
         return (self.reference_axis, self.limited_axis)
+
+    def steps(self) -> StepTable:
+        """The table in integers over a common denominator (:class:`StepTable`), made once."""
+        got = self._steps
+        if got is None:
+            got = StepTable(self)
+            object.__setattr__(self, "_steps", got)  # a cache of a frozen instance (the lexer's words do so)
+        return got
+
+    def reached(self, lo: Fraction, hi: Fraction) -> range:
+        """Indices of the regions whose closed reference range ``[lower, upto]`` meets ``[lo, hi]``.
+
+        The first region with ``upto >= lo`` up to the first with ``upto > hi`` (or the last region): the
+        bisections of the table's integers, ``upto >= lo`` being ``upto * den >= ceil(lo * den)`` and
+        ``upto > hi`` being ``upto * den > floor(hi * den)``.
+        """
+        t = self.steps()
+        first = _bisect_left(t.uptos, _ceil_times(lo, t.den))
+        last = _bisect_right(t.uptos, _floor_times(hi, t.den))
+        return range(first, min(last + 1, len(t.uptos)))
+
+    def fits(self, r0: Fraction, r1: Fraction, l0: Fraction, l1: Fraction) -> bool:
+        """Does the closed box ``[r0, r1] x [l0, l1]`` (reference x limited axis, ``r0 <= r1``) lie in the zone?
+
+        Exact.  It does when ``[r0, r1]`` lies in ``[from, upto[last]]`` and every region whose reference range
+        the box meets (``(upto[i-1], upto[i]]``, the first one closed) holds ``[l0, l1]``: the regions
+        ``first..e``, ``first`` the first with ``upto >= r0`` and ``e`` the first with ``upto >= r1`` (a region
+        after ``e`` starts at ``upto[e] >= r1`` or later, open, so the box misses it), whose largest ``min``
+        must be at most ``l0`` and smallest ``max`` at least ``l1``.  In the integers of :meth:`steps` (see
+        :class:`StepTable`): two bisections and the largest and smallest entry of two runs of a list, so a box
+        over thousands of regions costs no rational arithmetic.  An inverted ``r0 > r1`` is not shown to fit.
+        """
+        t = self.steps()
+        den, uptos = t.den, t.uptos
+        c1 = _ceil_times(r1, den)
+        if r0 > r1 or _floor_times(r0, den) < t.start or c1 > uptos[-1]:
+            return False
+        first = _bisect_left(uptos, _ceil_times(r0, den))
+        end = _bisect_left(uptos, c1) + 1
+        highest = max(t.mins[first:end])
+        if highest != t.low and _floor_times(l0, den) < highest:
+            return False
+        lowest = min(t.maxs[first:end])
+        return lowest == t.high or _ceil_times(l1, den) <= lowest
+
+    def rows_clear(self, r0: Fraction, r1: Fraction, l0: Fraction, l1: Fraction) -> bool:
+        """Is ``[l0, l1]`` outside the open limited range of every region :meth:`reached` by ``[r0, r1]``?
+
+        A flat region (``min == max``) has no interior and counts as clear.  Then the box ``[r0, r1] x [l0,
+        l1]`` meets no region's interior, nor the interior at a boundary (which lies in both neighbours' open
+        ranges): it misses the zone's interior.  (It may miss it also when this says False, at a boundary the
+        box only touches.)  Exact in the integers of :meth:`steps`.
+        """
+        t = self.steps()
+        fl0, cl1 = _floor_times(l0, t.den), _ceil_times(l1, t.den)
+        mins, maxs, low, high = t.mins, t.maxs, t.low, t.high
+        for i in self.reached(r0, r1):
+            lo, hi = mins[i], maxs[i]
+            if lo == hi or (hi != high and fl0 >= hi) or (lo != low and cl1 <= lo):
+                continue
+            return False
+        return True
 
     @property
     def uptos(self) -> tuple[Fraction, ...]:
@@ -143,10 +266,11 @@ class SteppedZone:
         return None, comparisons
 
     def region_bisect(self, r: Fraction) -> int | None:
-        """The same lookup by binary search (O(log n))."""
+        """The same lookup by binary search (O(log n)), in the integers of :meth:`steps`."""
         if r < self.start or r > self.regions[-1].upto:
             return None
-        return _bisect_left(self.uptos, r)
+        t = self.steps()
+        return _bisect_left(t.uptos, _ceil_times(r, t.den))
 
     def contains(self, p: Point) -> bool:
         """Closed-set membership."""
@@ -161,17 +285,11 @@ class SteppedZone:
         return self.box_meets_interior(p, _ZERO)
 
     def box_inside(self, p: Point, d: Fraction) -> bool:
-        """Does the closed box of half-width ``d`` around ``p`` lie in the zone?"""
+        """Does the closed box of half-width ``d`` (``d >= 0``) around ``p`` lie in the zone?  (:meth:`fits`.)"""
         r, lim = p[self.reference_axis], p[self.limited_axis]
-        lo, hi = r - d, r + d
-        if lo < self.start or hi > self.regions[-1].upto:
-            return False
-        for i, reg in enumerate(self.regions):
-            a, b = self.region_lower(i), reg.upto
-            touches = lo <= b and (hi >= a if i == 0 else hi > a)
-            if touches and not (_ge(lim - d, reg.min) and _le(lim + d, reg.max)):
-                return False
-        return True
+        if d:
+            return self.fits(r - d, r + d, lim - d, lim + d)
+        return self.fits(r, r, lim, lim)
 
     def box_meets_interior(self, p: Point, d: Fraction) -> bool:
         """Does the closed box of half-width ``d`` meet the zone's interior?"""
