@@ -325,6 +325,7 @@ class _Locator:
         self.path = path
         self.lines = text.splitlines()
         self._sections: dict[str, list[int]] = {}
+        self._brackets: list[int] | None = None
         self._elements: dict[tuple[str, int | None], list[tuple[int, int]]] = {}
 
     def _span(self, index: int, column: int, width: int) -> SourceSpan:
@@ -343,8 +344,18 @@ class _Locator:
         found = self._sections.get(header)
         if found is None:
             pattern = re.compile(r"^\s*\[+\s*" + re.escape(header) + r"\s*\]+")
-            found = self._sections[header] = [i for i, line in enumerate(self.lines) if pattern.match(line)]
+            lines = self.lines
+            found = self._sections[header] = [i for i in self._bracketed() if pattern.match(lines[i])]
         return found[occurrence] if occurrence < len(found) else None
+
+    def _bracketed(self) -> list[int]:
+        r"""The lines whose first character after white space is ``[`` (the only ones a header pattern of
+        :meth:`section` can match: ``\s`` and ``str.lstrip`` strip the same characters), found once: a file of
+        thousands of region lines is read once for all the headers asked, not once per header name."""
+        got = self._brackets
+        if got is None:
+            got = self._brackets = [i for i, line in enumerate(self.lines) if line.lstrip()[:1] == "["]
+        return got
 
     def header(self, index: int | None) -> SourceSpan | None:
         """A span over the header on line ``index`` (as returned by :meth:`section`)."""
@@ -1495,6 +1506,89 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     if not isinstance(raw_regions, list) or not raw_regions:
         rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {as_written(raw_regions)}", rd.loc.key("regions", header))
         return None
+    plain = None if start is None else _plain_regions(raw_regions, start)
+    if plain is not None:  # every region in the common form: what _regions would read, without a word
+        regions, ok = plain, True
+    else:
+        regions, ok = _regions(rd, raw_regions, label, header, ref, start)
+    if not ok or start is None or ref is None or lim is None or ref == lim:
+        return None
+    return SteppedZone(name, ref, lim, start, tuple(regions), forbid, point)
+
+
+#: The keys a region of a stepped table may have.
+_REGION_KEYS = frozenset(("upto", "min", "max"))
+
+
+def _plain_regions(raw_regions: list[Any], start: Fraction) -> list[Region] | None:
+    """The regions of a table written in the common form, or None for :func:`_regions` to read (and report).
+
+    The common form: each region an inline table of ``upto`` and optionally ``min`` and ``max``, each a
+    decimal string of :data:`_PLAIN_DECIMAL` within :data:`MAX_ABS_LENGTH` (``read_number``'s fast case), ``min``
+    at most ``max`` and every ``upto`` greater than the one before (the first greater than ``start``).  Such a
+    list is one on which :func:`_regions` reports nothing, and the regions are the numbers ``read_number``
+    reads (equal ``Fraction`` values); anything else returns None and is read by :func:`_regions` from the start,
+    so every diagnostic is as it was.  Faster than the loop of :func:`_regions` (issue 36, a table of 4,096
+    regions): no span finder is made, a text written twice is read once, and the comparisons are of integers
+    (each number as ``num / den``, ``den`` a power of ten: ``a / b > c / d`` when ``a * d > c * b``).
+    """
+    if MAX_ABS_LENGTH.denominator != 1:
+        return None
+    bound = MAX_ABS_LENGTH.numerator
+    keys = _REGION_KEYS
+    read: dict[str, tuple[Fraction, int, int]] = {}
+    prev_num, prev_den = start.numerator, start.denominator
+    out = []
+    for rt in raw_regions:
+        if type(rt) is not dict or not rt.keys() <= keys:
+            return None
+        u = rt.get("upto")
+        upto = read.get(u) if type(u) is str else None
+        if upto is None and (upto := _plain_number(u, bound, read)) is None:
+            return None
+        num, den = upto[1], upto[2]
+        if num * prev_den <= prev_num * den:
+            return None
+        prev_num, prev_den = num, den
+        lo = hi = None
+        if "min" in rt:
+            a = rt["min"]
+            lo = read.get(a) if type(a) is str else None
+            if lo is None and (lo := _plain_number(a, bound, read)) is None:
+                return None
+        if "max" in rt:
+            b = rt["max"]
+            hi = read.get(b) if type(b) is str else None
+            if hi is None and (hi := _plain_number(b, bound, read)) is None:
+                return None
+        if lo is not None and hi is not None and lo[1] * hi[2] > hi[1] * lo[2]:
+            return None
+        out.append(Region(upto[0], None if lo is None else lo[0], None if hi is None else hi[0]))
+    return out
+
+
+def _plain_number(value: Any, bound: int, read: dict[str, tuple[Fraction, int, int]]) -> tuple[Fraction, int, int] | None:
+    """``(q, num, den)``, ``q = num / den``, of a decimal string :func:`read_number` reads without a word
+    (:data:`_PLAIN_DECIMAL`, magnitude at most ``bound``), remembered in ``read``; else None."""
+    if type(value) is not str:
+        return None
+    m = _PLAIN_DECIMAL.match(value)
+    if m is None:
+        return None
+    sign, whole, frac = m.groups()
+    frac = frac or ""
+    num, den = int(whole + frac), 10 ** len(frac)
+    if num > bound * den:
+        return None
+    if sign == "-" and num != 0:
+        num = -num
+    got = read[value] = (Fraction(num, den), num, den)
+    return got
+
+
+def _regions(rd: _Reader, raw_regions: list[Any], label: str, header: int | None, ref: str | None,
+             start: Fraction | None) -> tuple[list[Region], bool]:
+    """The regions of a table as written, each problem reported (and whether there was none)."""
     regions: list[Region] = []
     previous = start
     ok = True
@@ -1532,9 +1626,7 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
             ok = False
         previous = upto
         regions.append(Region(upto, lo, hi))
-    if not ok or start is None or ref is None or lim is None or ref == lim:
-        return None
-    return SteppedZone(name, ref, lim, start, tuple(regions), forbid, point)
+    return regions, ok
 
 
 def _limits(rd: _Reader, zt: Mapping[str, Any], label: str, header: int | None, axes: tuple[str, ...],
