@@ -16,6 +16,9 @@ from __future__ import annotations
 import decimal
 import enum
 import functools
+import itertools
+import math
+import operator
 import os
 import re
 from collections.abc import Callable, Mapping
@@ -1506,11 +1509,12 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
     if not isinstance(raw_regions, list) or not raw_regions:
         rd.report("ZN120", f"{label}: regions must be a non-empty list such as [{{ upto = \"500\", max = \"300\" }}], got {as_written(raw_regions)}", rd.loc.key("regions", header))
         return None
-    plain = None if start is None else _plain_regions(raw_regions, start)
+    plain = None if start is None else _plain_table(raw_regions, start)
     if plain is not None:  # every region in the common form: what _regions would read, without a word
-        regions, ok = plain, True
-    else:
-        regions, ok = _regions(rd, raw_regions, label, header, ref, start)
+        if ref is None or lim is None or ref == lim:
+            return None
+        return SteppedZone.from_integers(name, ref, lim, *plain, forbid, point)
+    regions, ok = _regions(rd, raw_regions, label, header, ref, start)
     if not ok or start is None or ref is None or lim is None or ref == lim:
         return None
     return SteppedZone(name, ref, lim, start, tuple(regions), forbid, point)
@@ -1520,70 +1524,80 @@ def _stepped(rd: _Reader, zt: Mapping[str, Any], label: str, name: str, header: 
 _REGION_KEYS = frozenset(("upto", "min", "max"))
 
 
-def _plain_regions(raw_regions: list[Any], start: Fraction) -> list[Region] | None:
-    """The regions of a table written in the common form, or None for :func:`_regions` to read (and report).
+_TEXT_OR_NONE = frozenset((str, type(None)))
+
+#: Decimal texts of :data:`_PLAIN_DECIMAL`, one a line (a list of them joined by newlines, read at once).
+_PLAIN_LINES = re.compile(r"(?:[+-]?[0-9]{1,10}(?:\.[0-9]{0,30})?\n)*[+-]?[0-9]{1,10}(?:\.[0-9]{0,30})?")
+
+
+def _plain_table(raw_regions: list[Any], start: Fraction) -> tuple[int, int, list[int], list[int | None],
+                                                                   list[int | None]] | None:
+    """A table's regions written in the common form, as integers over one denominator, or None for
+    :func:`_regions` to read (and report): ``(den, start, uptos, mins, maxs)``, each number ``k / den``, None
+    for a missing ``min`` / ``max`` (:meth:`SteppedZone.from_integers` makes the zone of them).
 
     The common form: each region an inline table of ``upto`` and optionally ``min`` and ``max``, each a
     decimal string of :data:`_PLAIN_DECIMAL` within :data:`MAX_ABS_LENGTH` (``read_number``'s fast case), ``min``
     at most ``max`` and every ``upto`` greater than the one before (the first greater than ``start``).  Such a
-    list is one on which :func:`_regions` reports nothing, and the regions are the numbers ``read_number``
-    reads (equal ``Fraction`` values); anything else returns None and is read by :func:`_regions` from the start,
-    so every diagnostic is as it was.  Faster than the loop of :func:`_regions` (issue 36, a table of 4,096
-    regions): no span finder is made, a text written twice is read once, and the comparisons are of integers
-    (each number as ``num / den``, ``den`` a power of ten: ``a / b > c / d`` when ``a * d > c * b``).
+    list is one on which :func:`_regions` reports nothing, and its numbers are the values ``read_number`` reads;
+    anything else returns None and is read by :func:`_regions` from the start, so every diagnostic is as it
+    was.  Faster than the loop of :func:`_regions` (issue 36, a table of 4,096 regions): the list is read a
+    column at a time, by the built-in functions (one pattern over the column's texts joined, ``int`` of each
+    text without its point), the limits' texts once each, and the checks are of integers.
     """
-    if MAX_ABS_LENGTH.denominator != 1:
+    if MAX_ABS_LENGTH.denominator != 1 or set(map(type, raw_regions)) != {dict}:
         return None
-    bound = MAX_ABS_LENGTH.numerator
-    keys = _REGION_KEYS
-    read: dict[str, tuple[Fraction, int, int]] = {}
-    prev_num, prev_den = start.numerator, start.denominator
-    out = []
-    for rt in raw_regions:
-        if type(rt) is not dict or not rt.keys() <= keys:
-            return None
-        u = rt.get("upto")
-        upto = read.get(u) if type(u) is str else None
-        if upto is None and (upto := _plain_number(u, bound, read)) is None:
-            return None
-        num, den = upto[1], upto[2]
-        if num * prev_den <= prev_num * den:
-            return None
-        prev_num, prev_den = num, den
-        lo = hi = None
-        if "min" in rt:
-            a = rt["min"]
-            lo = read.get(a) if type(a) is str else None
-            if lo is None and (lo := _plain_number(a, bound, read)) is None:
-                return None
-        if "max" in rt:
-            b = rt["max"]
-            hi = read.get(b) if type(b) is str else None
-            if hi is None and (hi := _plain_number(b, bound, read)) is None:
-                return None
-        if lo is not None and hi is not None and lo[1] * hi[2] > hi[1] * lo[2]:
-            return None
-        out.append(Region(upto[0], None if lo is None else lo[0], None if hi is None else hi[0]))
-    return out
+    if not set().union(*raw_regions) <= _REGION_KEYS:
+        return None
+    ups = list(map(dict.get, raw_regions, itertools.repeat("upto")))
+    lows = list(map(dict.get, raw_regions, itertools.repeat("min")))
+    highs = list(map(dict.get, raw_regions, itertools.repeat("max")))
+    # every region has its upto, and no key a value of None (each key counted: the keys are known ones)
+    if None in ups or sum(map(len, raw_regions)) != 3 * len(ups) - lows.count(None) - highs.count(None):
+        return None
+    kinds = set(map(type, lows))
+    kinds.update(map(type, highs))
+    if not kinds <= _TEXT_OR_NONE:  # (a list or a table would not even go in a set)
+        return None
+    texts = list({*lows, *highs} - {None})
+    read_ups, read_limits = _plain_column(ups), _plain_column(texts)
+    if read_ups is None or read_limits is None:
+        return None
+    den = math.lcm(read_ups[1], read_limits[1], start.denominator)
+    uptos = [k * (den // read_ups[1]) for k in read_ups[0]] if den != read_ups[1] else read_ups[0]
+    value = dict(zip(texts, [k * (den // read_limits[1]) for k in read_limits[0]]))
+    mins, maxs = list(map(value.get, lows)), list(map(value.get, highs))
+    first = start.numerator * (den // start.denominator)
+    if first >= uptos[0] or not all(map(operator.lt, uptos, itertools.islice(uptos, 1, None))):
+        return None
+    both = [(lo, hi) for lo, hi in zip(mins, maxs) if lo is not None and hi is not None]
+    if any(itertools.starmap(operator.gt, both)):
+        return None
+    return den, first, uptos, mins, maxs
 
 
-def _plain_number(value: Any, bound: int, read: dict[str, tuple[Fraction, int, int]]) -> tuple[Fraction, int, int] | None:
-    """``(q, num, den)``, ``q = num / den``, of a decimal string :func:`read_number` reads without a word
-    (:data:`_PLAIN_DECIMAL`, magnitude at most ``bound``), remembered in ``read``; else None."""
-    if type(value) is not str:
+def _plain_column(texts: list[Any]) -> tuple[list[int], int] | None:
+    """``(ks, den)``: each of ``texts`` as ``k / den``, ``den`` a power of ten, when every one is a string of
+    :data:`_PLAIN_DECIMAL` of magnitude at most :data:`MAX_ABS_LENGTH` (what :func:`read_number` reads without a
+    word, the same value); else None."""
+    if not texts:
+        return [], 1
+    try:
+        joined = "\n".join(texts)
+    except TypeError:  # not all strings
         return None
-    m = _PLAIN_DECIMAL.match(value)
-    if m is None:
+    if joined.count("\n") != len(texts) - 1 or _PLAIN_LINES.fullmatch(joined) is None:
         return None
-    sign, whole, frac = m.groups()
-    frac = frac or ""
-    num, den = int(whole + frac), 10 ** len(frac)
-    if num > bound * den:
+    # digits without the point (the pattern leaves no other character int() would read), and the places
+    ks = list(map(int, map(str.replace, texts, itertools.repeat("."), itertools.repeat(""))))
+    places = [len(t) - p - 1 if p >= 0 else 0 for t, p in zip(texts, map(str.find, texts, itertools.repeat(".")))]
+    top = max(places)
+    if min(places) != top:
+        ks = [k * 10 ** (top - p) for k, p in zip(ks, places)]
+    den = 10**top
+    if max(map(abs, ks)) > MAX_ABS_LENGTH.numerator * den:
         return None
-    if sign == "-" and num != 0:
-        num = -num
-    got = read[value] = (Fraction(num, den), num, den)
-    return got
+    return ks, den
 
 
 def _regions(rd: _Reader, raw_regions: list[Any], label: str, header: int | None, ref: str | None,

@@ -17,6 +17,7 @@ meeting no forbid zone's interior).  ``d = 0`` is plain membership.
 from __future__ import annotations
 
 import enum
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from fractions import Fraction
@@ -110,10 +111,11 @@ class Region:
 
 
 class StepTable:
-    """A stepped table's numbers as integers over one common denominator (made once per zone, on demand).
+    """A stepped table's numbers as integers over one common denominator (made once per zone).
 
-    ``den`` is the least common multiple of the denominators of ``from``, every ``upto``, ``min`` and ``max``
-    (a power of ten for a machine file's decimals); ``start``, ``uptos``, ``mins`` and ``maxs`` are those
+    ``den`` is a common denominator of ``from``, every ``upto``, ``min`` and ``max`` (their least common
+    multiple when made from a zone's Fractions, :meth:`of`; the power of ten of a machine file's decimals
+    when read from it, :meth:`SteppedZone.from_integers`); ``start``, ``uptos``, ``mins`` and ``maxs`` are those
     values times ``den``, exact integers, ``mins[i]`` / ``maxs[i]`` being ``low`` / ``high`` where region
     ``i`` has no ``min`` / ``max``.  ``low`` is less and ``high`` greater than every finite value of the table,
     so the largest ``min`` of a run of regions is ``low`` only when none of them has one (and likewise the
@@ -123,25 +125,35 @@ class StepTable:
     when ``floor(q * den) >= k`` and ``q <= k / den`` exactly when ``ceil(q * den) <= k`` (``k`` an integer),
     so one floor or ceiling per query bound turns every comparison with the table into one of integers.
 
-    A plain class with slots, not a dataclass: it is made only for a machine with a stepped zone, the first time
-    a proof asks (a dataclass costs every start-up its creation, boot44).
+    A plain class with slots, not a dataclass: it is made only for a machine with a stepped zone (a dataclass
+    costs every start-up its creation, boot44).
     """
 
     __slots__ = ("den", "start", "uptos", "mins", "maxs", "low", "high")
 
-    def __init__(self, zone: SteppedZone):
+    def __init__(self, den: int, start: int, uptos: list[int], mins: list[int | None], maxs: list[int | None]):
+        self.den, self.start, self.uptos = den, start, uptos
+        finite = [start, min(uptos), max(uptos), *[v for v in mins if v is not None],
+                  *[v for v in maxs if v is not None]]
+        low, high = self.low, self.high = min(finite) - 1, max(finite) + 1
+        self.mins = [low if v is None else v for v in mins]
+        self.maxs = [high if v is None else v for v in maxs]
+
+    @classmethod
+    def of(cls, zone: SteppedZone) -> StepTable:
+        """The table of ``zone``'s Fractions over the least common multiple of their denominators."""
         regions = zone.regions
+        ups = [r.upto for r in regions]
         lows = [r.min for r in regions]
         highs = [r.max for r in regions]
-        values = [zone.start, *(r.upto for r in regions), *(v for v in lows if v is not None),
-                  *(v for v in highs if v is not None)]
-        den = self.den = math.lcm(*{v.denominator for v in values})
-        self.start = zone.start.numerator * (den // zone.start.denominator)
-        self.uptos = [r.upto.numerator * (den // r.upto.denominator) for r in regions]
-        scaled = [v.numerator * (den // v.denominator) for v in values]
-        low, high = self.low, self.high = min(scaled) - 1, max(scaled) + 1
-        self.mins = [low if v is None else v.numerator * (den // v.denominator) for v in lows]
-        self.maxs = [high if v is None else v.numerator * (den // v.denominator) for v in highs]
+        dens = {v.denominator for v in ups}
+        dens.update([v.denominator for v in lows if v is not None])
+        dens.update([v.denominator for v in highs if v is not None])
+        den = math.lcm(zone.start.denominator, *dens)
+        return cls(den, zone.start.numerator * (den // zone.start.denominator),
+                   [v.numerator * (den // v.denominator) for v in ups],
+                   [None if v is None else v.numerator * (den // v.denominator) for v in lows],
+                   [None if v is None else v.numerator * (den // v.denominator) for v in highs])
 
 
 @dataclass(frozen=True, slots=True)
@@ -183,9 +195,32 @@ class SteppedZone:
         """The table in integers over a common denominator (:class:`StepTable`), made once."""
         got = self._steps
         if got is None:
-            got = StepTable(self)
+            got = StepTable.of(self)
             object.__setattr__(self, "_steps", got)  # a cache of a frozen instance (the lexer's words do so)
         return got
+
+    @classmethod
+    def from_integers(cls, name: str, reference_axis: str, limited_axis: str, den: int, start: int,
+                      uptos: list[int], mins: list[int | None], maxs: list[int | None], forbid: bool = False,
+                      point: ZonePoint = ZonePoint.MACHINE) -> SteppedZone:
+        """The table whose ``from`` is ``start / den``, region ``i`` reaching ``uptos[i] / den`` with limits
+        ``mins[i] / den`` and ``maxs[i] / den`` (None: none), its :class:`StepTable` made of the same integers.
+
+        How a machine file's table is read (issue 36): the regions' Fractions are made from these integers
+        here, so the table in integers is exact by construction, with no second pass over the Fractions; a
+        limit written many times is one Fraction.
+
+        >>> z = SteppedZone.from_integers("t", "X", "Y", 10, 0, [15, 30], [None, -5], [20, 20])
+        >>> z == SteppedZone("t", "X", "Y", Fraction(0), (Region(Fraction(3, 2), None, Fraction(2)),
+        ...                                             Region(Fraction(3), Fraction(-1, 2), Fraction(2))))
+        True
+        """
+        limits = {k: Fraction(k, den) for k in {*mins, *maxs} if k is not None}
+        regions = tuple(map(Region, map(Fraction, uptos, itertools.repeat(den)), map(limits.get, mins),
+                            map(limits.get, maxs)))
+        zone = cls(name, reference_axis, limited_axis, Fraction(start, den), regions, forbid, point)
+        object.__setattr__(zone, "_steps", StepTable(den, start, uptos, mins, maxs))
+        return zone
 
     def reached(self, lo: Fraction, hi: Fraction) -> range:
         """Indices of the regions whose closed reference range ``[lower, upto]`` meets ``[lo, hi]``.

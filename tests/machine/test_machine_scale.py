@@ -139,6 +139,12 @@ def region_rows(draw) -> list[str]:
             parts = [p.replace('"', "") for p in parts]  # TOML numbers: Decimal and int values
         elif odd == 3:
             parts.reverse()
+        elif odd == 5:
+            parts.append('min = ["1"]' if lo is None else 'max = { a = "1" }')
+        elif odd == 6:
+            parts[0] = f'upto = "{upto}\\n{upto + 1}"'  # a TOML escape: a newline in the text
+        elif odd == 7:
+            parts.append("max = true" if hi is None else "min = 2")
         rows.append("{ " + ", ".join(parts) + " }" if odd != 4 else '"5"')
     return rows
 
@@ -165,16 +171,18 @@ def _outcome(text: str):
 @example(['{ upto = "1", min = "2", max = "1" }'], '"0"')
 @example(['{ upto = "1" }', '{ upto = "1.0" }'], '"0"')
 @example(['{ upto = "0" }'], '"0"')
+@example(['{ upto = "1\\n2" }'], '"0"')
+@example(['{ upto = "1" }', '{ upto = "2", min = ["1"] }'], '"0"')
 @example(['{ upto = "1", min = "1", max = "1" }', '{ upto = "2", min = "-0", max = "0.000" }'], '"-0"')
 def test_common_form_regions_read_as_the_region_loop_reads_them(rows, start):
-    """The regions read by ``_plain_regions`` (the common form) against the loop that reads any form and reports
+    """The regions read by ``_plain_table`` (the common form) against the loop that reads any form and reports
     each problem: the same zones, or the same diagnostics (code, message, span) -- the loop alone decides those."""
     import nczones.machine as machine
 
     text = _table_text(rows, start)
     got = _outcome(text)
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(machine, "_plain_regions", lambda raw, start: None)
+        mp.setattr(machine, "_plain_table", lambda raw, start: None)
         want = _outcome(text)
     assert got == want
     if isinstance(got, tuple):
@@ -187,8 +195,8 @@ def test_a_table_of_4096_regions_takes_the_common_form(monkeypatch):
 
     rows = [f'{{upto = "{(k + 1) * 0.976562:.6f}", min = "{-1 - k % 7}", max = "{300 + k % 5}"}}' for k in range(4096)]
     calls = []
-    plain = machine._plain_regions
-    monkeypatch.setattr(machine, "_plain_regions", lambda raw, start: calls.append(plain(raw, start)) or calls[-1])
+    plain = machine._plain_table
+    monkeypatch.setattr(machine, "_plain_table", lambda raw, start: calls.append(plain(raw, start)) or calls[-1])
     (zone,) = parse_machine(_table_text(rows), "m.toml").allowed.zones
     assert calls[0] is not None and len(zone.regions) == 4096
     assert zone.regions[4095] == machine.Region(F("3999.997952"), F(-1 - 4095 % 7), F(300 + 4095 % 5))

@@ -194,3 +194,24 @@ def test_a_large_table_is_read_from_its_runs(n):
                        for i in range(n) if z.region_lower(i) <= r1 and (i == 0 or z.region_lower(i) < r1)
                        and z.regions[i].upto >= r0)
         assert got == expected
+
+
+@FAST
+@given(tables_and_boxes(), st.integers(1, 3))
+def test_a_table_made_of_integers_is_the_table(zb, extra):
+    """``from_integers`` over any common denominator (here the lcm times 1, 2 or 3; a machine file's power of
+    ten when read) makes the zone of those numbers, and its table answers as the one made from the Fractions."""
+    zone, r0, r1, l0, l1 = zb
+    den = zone.steps().den * extra
+
+    def k(q):
+        return None if q is None else q.numerator * (den // q.denominator)
+
+    made = SteppedZone.from_integers(zone.name, "X", "Y", den, k(zone.start), [k(r.upto) for r in zone.regions],
+                                     [k(r.min) for r in zone.regions], [k(r.max) for r in zone.regions],
+                                     zone.forbid)
+    assert made == zone
+    assert all(type(v) is F for r in made.regions for v in (r.upto, r.min, r.max) if v is not None)
+    assert made.steps().den == den and made.fits(r0, r1, l0, l1) == zone.fits(r0, r1, l0, l1)
+    assert made.rows_clear(r0, r1, l0, l1) == zone.rows_clear(r0, r1, l0, l1)
+    assert made.reached(r0, r1) == zone.reached(r0, r1)
