@@ -126,18 +126,32 @@ def _key(key: Any) -> str:
 
 
 def decode(stored: Any) -> Any:
-    """The table :func:`encode` stored as ``stored``.
+    """The table :func:`encode` stored as ``stored``, decoded in place: its dicts and lists are reused, each
+    Decimal's 1-tuple replaced by the ``Decimal`` (``stored`` is what :mod:`marshal` has just made, owned by no
+    one else; a machine file's table is mostly strings, and a region list of thousands of them is checked
+    without building it again, issue 36).
 
     Raises
     ------
     _NotStored
-        For anything :func:`encode` does not produce (a foreign or corrupt entry).
+        For anything :func:`encode` does not produce (a foreign or corrupt entry; ``stored`` is then left part
+        decoded, to be dropped).
     """
     kind = type(stored)
     if kind is dict:
-        return {_key(k): decode(v) for k, v in stored.items()}
+        for k, v in stored.items():
+            if type(k) is not str:
+                raise _NotStored(type(k).__name__)
+            t = type(v)
+            if t is not str and t is not int and t is not bool:
+                stored[k] = decode(v)  # a value replaced, no key added: the iteration goes on
+        return stored
     if kind is list:
-        return [decode(v) for v in stored]
+        for i, v in enumerate(stored):
+            t = type(v)
+            if t is not str and t is not int and t is not bool:
+                stored[i] = decode(v)
+        return stored
     if kind is str or kind is int or kind is bool:
         return stored
     if kind is tuple and len(stored) == 1 and type(stored[0]) is str:
