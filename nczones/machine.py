@@ -1570,9 +1570,8 @@ def _plain_table(raw_regions: list[Any], start: Fraction) -> tuple[int, int, lis
     first = start.numerator * (den // start.denominator)
     if first >= uptos[0] or not all(map(operator.lt, uptos, itertools.islice(uptos, 1, None))):
         return None
-    both = [(lo, hi) for lo, hi in zip(mins, maxs) if lo is not None and hi is not None]
-    if any(itertools.starmap(operator.gt, both)):
-        return None
+    if any(lo is not None and hi is not None and value[lo] > value[hi] for lo, hi in set(zip(lows, highs))):
+        return None  # (each pair of texts written checked once)
     return den, first, uptos, mins, maxs
 
 
@@ -1590,9 +1589,13 @@ def _plain_column(texts: list[Any]) -> tuple[list[int], int] | None:
         return None
     # digits without the point (the pattern leaves no other character int() would read), and the places
     ks = list(map(int, map(str.replace, texts, itertools.repeat("."), itertools.repeat(""))))
-    places = [len(t) - p - 1 if p >= 0 else 0 for t, p in zip(texts, map(str.find, texts, itertools.repeat(".")))]
-    top = max(places)
-    if min(places) != top:
+    points = list(map(str.find, texts, itertools.repeat(".")))
+    ends = set(map(operator.sub, map(len, texts), points)) if -1 not in points else ()
+    if len(ends) == 1:  # every text has a point and as many places after it (a table's usual column)
+        top = ends.pop() - 1
+    else:
+        places = [len(t) - p - 1 if p >= 0 else 0 for t, p in zip(texts, points)]
+        top = max(places)
         ks = [k * 10 ** (top - p) for k, p in zip(ks, places)]
     den = 10**top
     if max(map(abs, ks)) > MAX_ABS_LENGTH.numerator * den:

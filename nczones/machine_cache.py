@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import _thread
 import decimal
+import itertools
 import marshal
 import os
 import stat
@@ -147,6 +148,8 @@ def decode(stored: Any) -> Any:
                 stored[k] = decode(v)  # a value replaced, no key added: the iteration goes on
         return stored
     if kind is list:
+        if stored and _flat_tables(stored):
+            return stored  # nothing to replace (a list of regions, checked in C)
         for i, v in enumerate(stored):
             t = type(v)
             if t is not str and t is not int and t is not bool:
@@ -157,6 +160,16 @@ def decode(stored: Any) -> Any:
     if kind is tuple and len(stored) == 1 and type(stored[0]) is str:
         return decimal.Decimal(stored[0])
     raise _NotStored(kind.__name__)
+
+
+def _flat_tables(rows: list[Any]) -> bool:
+    """Is every item of ``rows`` a dict of ``str`` keys and ``str``, ``int`` or ``bool`` values (a value
+    :func:`decode` leaves as it is)?"""
+    return (set(map(type, rows)) == _DICT and set(map(type, itertools.chain.from_iterable(rows))) <= _STR
+            and set(map(type, itertools.chain.from_iterable(map(dict.values, rows)))) <= _LEAVES)
+
+
+_DICT, _STR, _LEAVES = frozenset((dict,)), frozenset((str,)), frozenset((str, int, bool))
 
 
 def read_entry(entry: str, header: tuple[Any, ...], limit: int) -> Any:

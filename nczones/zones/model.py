@@ -133,11 +133,14 @@ class StepTable:
 
     def __init__(self, den: int, start: int, uptos: list[int], mins: list[int | None], maxs: list[int | None]):
         self.den, self.start, self.uptos = den, start, uptos
-        finite = [start, min(uptos), max(uptos), *[v for v in mins if v is not None],
-                  *[v for v in maxs if v is not None]]
+        finite = [start, min(uptos), max(uptos)]
+        for column in (mins, maxs):  # (a column without None is read by min and max, in C)
+            given = column if None not in column else [v for v in column if v is not None]
+            if given:
+                finite += (min(given), max(given))
         low, high = self.low, self.high = min(finite) - 1, max(finite) + 1
-        self.mins = [low if v is None else v for v in mins]
-        self.maxs = [high if v is None else v for v in maxs]
+        self.mins = mins if None not in mins else [low if v is None else v for v in mins]
+        self.maxs = maxs if None not in maxs else [high if v is None else v for v in maxs]
 
     @classmethod
     def of(cls, zone: SteppedZone) -> StepTable:
