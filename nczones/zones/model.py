@@ -110,6 +110,21 @@ class Region:
     max: Fraction | None = None
 
 
+#: The setters of a Region's three slots (what its ``__init__`` does, one call each).
+_REGION_SETTERS = tuple(Region.__dict__[name].__set__ for name in ("upto", "min", "max"))
+
+
+def _regions(uptos: list[Fraction], mins: list[Fraction | None], maxs: list[Fraction | None]) -> tuple[Region, ...]:
+    """``tuple(map(Region, uptos, mins, maxs))``, a column at a time: the instances made by ``object.__new__`` and
+    each slot set by its descriptor over the column, in C (``Region.__init__`` does nothing else: it sets the
+    three fields; a Python call a region costs as much as the rest of reading a table, issue 36).
+    ``tests/zones/test_step_table.py`` holds the result to ``Region(...)`` and the fields to these three."""
+    made = list(map(object.__new__, itertools.repeat(Region, len(uptos))))
+    for setter, column in zip(_REGION_SETTERS, (uptos, mins, maxs)):
+        any(map(setter, made, column))  # each call returns None: any() runs the map to its end
+    return tuple(made)
+
+
 class StepTable:
     """A stepped table's numbers as integers over one common denominator (made once per zone).
 
@@ -219,8 +234,8 @@ class SteppedZone:
         True
         """
         limits = {k: Fraction(k, den) for k in {*mins, *maxs} if k is not None}
-        regions = tuple(map(Region, map(Fraction, uptos, itertools.repeat(den)), map(limits.get, mins),
-                            map(limits.get, maxs)))
+        regions = _regions(list(map(Fraction, uptos, itertools.repeat(den))), list(map(limits.get, mins)),
+                           list(map(limits.get, maxs)))
         zone = cls(name, reference_axis, limited_axis, Fraction(start, den), regions, forbid, point)
         object.__setattr__(zone, "_steps", StepTable(den, start, uptos, mins, maxs))
         return zone

@@ -215,3 +215,19 @@ def test_a_table_made_of_integers_is_the_table(zb, extra):
     assert made.steps().den == den and made.fits(r0, r1, l0, l1) == zone.fits(r0, r1, l0, l1)
     assert made.rows_clear(r0, r1, l0, l1) == zone.rows_clear(r0, r1, l0, l1)
     assert made.reached(r0, r1) == zone.reached(r0, r1)
+
+
+def test_regions_made_a_column_at_a_time_are_regions():
+    """``from_integers`` sets a Region's slots directly (what ``Region.__init__`` does): the same objects, as long
+    as a Region is these three fields and nothing runs after its ``__init__``."""
+    from nczones.precompiled import field_names
+    from nczones.zones import model
+
+    assert field_names(Region) == ("upto", "min", "max") and not hasattr(Region, "__post_init__")
+    ups, lows, highs = [F(1), F(5, 2)], [None, F(-1)], [F(3), None]
+    made = model._regions(ups, lows, highs)
+    want = tuple(map(Region, ups, lows, highs))
+    assert made == want and [hash(r) for r in made] == [hash(r) for r in want] and repr(made) == repr(want)
+    assert all(type(r) is Region for r in made) and made[1].min == F(-1) and made[0].min is None
+    with pytest.raises(AttributeError):
+        made[0].upto = F(0)  # frozen as any Region
