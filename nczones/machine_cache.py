@@ -99,8 +99,11 @@ def _header(source: bytes) -> tuple[Any, ...]:
     return (_MAGIC, FORMAT, sys.version, __version__, source)
 
 
-def encode(value: Any) -> Any:
-    """The table ``value`` as :mod:`marshal` stores it: each ``Decimal`` as the 1-tuple of its ``str``.
+def encode(value: Any, texts: dict[str, str] | None = None) -> Any:
+    """The table ``value`` as :mod:`marshal` stores it: each ``Decimal`` as the 1-tuple of its ``str``, and
+    equal strings (keys and values) as one object, which :mod:`marshal` writes once and refers to after
+    (``texts``: the strings met so far).  A table of thousands of ``{ upto = ..., min = ..., max = ... }`` is
+    then read back with its keys and repeated limits made once each (issue 36); the value is the same.
 
     Raises
     ------
@@ -108,12 +111,16 @@ def encode(value: Any) -> Any:
         For a value of any type but ``dict`` (of ``str`` keys), ``list``, ``str``, ``int``, ``bool`` and
         ``Decimal``.
     """
+    if texts is None:
+        texts = {}
     kind = type(value)
     if kind is dict:
-        return {_key(k): encode(v) for k, v in value.items()}
+        return {texts.setdefault(_key(k), k): encode(v, texts) for k, v in value.items()}
     if kind is list:
-        return [encode(v) for v in value]
-    if kind is str or kind is int or kind is bool:
+        return [encode(v, texts) for v in value]
+    if kind is str:
+        return texts.setdefault(value, value)
+    if kind is int or kind is bool:
         return value
     if kind is decimal.Decimal:
         return (str(value),)

@@ -328,3 +328,17 @@ def test_a_stored_table_sharing_a_container_is_read_right_or_missed(cache):
     stored[-1] = {"a": shared, "b": shared}
     entry.write_bytes(marshal.dumps(tuple(stored)))
     assert _is_miss(path, source)
+
+
+def test_equal_strings_are_stored_once():
+    """encode makes equal strings one object, which marshal writes once: read back, the keys and repeated values
+    of a long region list are one object each (fewer strings to make at every start, issue 36)."""
+    rows = [{"upto": str(k + 1), "max": "300"} for k in range(3)]
+    rows.append({"upto": "".join(["30", "0"]), "max": "".join(["30", "0"])})  # equal texts, distinct objects
+    stored = mc.encode({"regions": rows})
+    back = marshal.loads(marshal.dumps(stored))
+    keys = [k for row in back["regions"] for k in row]
+    assert len({id(k) for k in keys if k == "upto"}) == 1
+    assert len({id(row["max"]) for row in back["regions"]}) == 1
+    assert back["regions"][3]["upto"] is back["regions"][3]["max"]
+    assert mc.decode(back) == {"regions": rows}
