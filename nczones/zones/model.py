@@ -120,9 +120,24 @@ def _regions(uptos: list[Fraction], mins: list[Fraction | None], maxs: list[Frac
     three fields; a Python call a region costs as much as the rest of reading a table, issue 36).
     ``tests/zones/test_step_table.py`` holds the result to ``Region(...)`` and the fields to these three."""
     made = list(map(object.__new__, itertools.repeat(Region, len(uptos))))
-    for setter, column in zip(_REGION_SETTERS, (uptos, mins, maxs)):
+    columns: tuple[list[Any], ...] = (uptos, mins, maxs)
+    for setter, column in zip(_REGION_SETTERS, columns):
         any(map(setter, made, column))  # each call returns None: any() runs the map to its end
     return tuple(made)
+
+
+def _present(column: list[int | None]) -> list[int]:
+    """The integers of ``column`` (``column`` itself when it holds no None: found in C, no copy)."""
+    if None not in column:
+        return column  # type: ignore[return-value]  # (no None in it)
+    return [v for v in column if v is not None]
+
+
+def _filled(column: list[int | None], fill: int) -> list[int]:
+    """``column`` with each None replaced by ``fill`` (``column`` itself when it holds none)."""
+    if None not in column:
+        return column  # type: ignore[return-value]  # (no None in it)
+    return [fill if v is None else v for v in column]
 
 
 class StepTable:
@@ -149,13 +164,13 @@ class StepTable:
     def __init__(self, den: int, start: int, uptos: list[int], mins: list[int | None], maxs: list[int | None]):
         self.den, self.start, self.uptos = den, start, uptos
         finite = [start, min(uptos), max(uptos)]
-        for column in (mins, maxs):  # (a column without None is read by min and max, in C)
-            given = column if None not in column else [v for v in column if v is not None]
+        for column in (mins, maxs):
+            given = _present(column)
             if given:
                 finite += (min(given), max(given))
-        low, high = self.low, self.high = min(finite) - 1, max(finite) + 1
-        self.mins = mins if None not in mins else [low if v is None else v for v in mins]
-        self.maxs = maxs if None not in maxs else [high if v is None else v for v in maxs]
+        self.low, self.high = min(finite) - 1, max(finite) + 1
+        self.mins = _filled(mins, self.low)
+        self.maxs = _filled(maxs, self.high)
 
     @classmethod
     def of(cls, zone: SteppedZone) -> StepTable:
@@ -233,7 +248,7 @@ class SteppedZone:
         ...                                             Region(Fraction(3), Fraction(-1, 2), Fraction(2))))
         True
         """
-        limits = {k: Fraction(k, den) for k in {*mins, *maxs} if k is not None}
+        limits: dict[int | None, Fraction | None] = {k: Fraction(k, den) for k in {*mins, *maxs} if k is not None}
         regions = _regions(list(map(Fraction, uptos, itertools.repeat(den))), list(map(limits.get, mins)),
                            list(map(limits.get, maxs)))
         zone = cls(name, reference_axis, limited_axis, Fraction(start, den), regions, forbid, point)
