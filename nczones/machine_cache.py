@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import _thread
 import decimal
+import itertools
 import marshal
 import os
 import stat
@@ -98,8 +99,11 @@ def _header(source: bytes) -> tuple[Any, ...]:
     return (_MAGIC, FORMAT, sys.version, __version__, source)
 
 
-def encode(value: Any) -> Any:
-    """The table ``value`` as :mod:`marshal` stores it: each ``Decimal`` as the 1-tuple of its ``str``.
+def encode(value: Any, texts: dict[str, str] | None = None) -> Any:
+    """The table ``value`` as :mod:`marshal` stores it: each ``Decimal`` as the 1-tuple of its ``str``, and
+    equal strings (keys and values) as one object, which :mod:`marshal` writes once and refers to after
+    (``texts``: the strings met so far).  A table of thousands of ``{ upto = ..., min = ..., max = ... }`` is
+    then read back with its keys and repeated limits made once each (issue 36); the value is the same.
 
     Raises
     ------
@@ -107,12 +111,16 @@ def encode(value: Any) -> Any:
         For a value of any type but ``dict`` (of ``str`` keys), ``list``, ``str``, ``int``, ``bool`` and
         ``Decimal``.
     """
+    if texts is None:
+        texts = {}
     kind = type(value)
     if kind is dict:
-        return {_key(k): encode(v) for k, v in value.items()}
+        return {texts.setdefault(_key(k), k): encode(v, texts) for k, v in value.items()}
     if kind is list:
-        return [encode(v) for v in value]
-    if kind is str or kind is int or kind is bool:
+        return [encode(v, texts) for v in value]
+    if kind is str:
+        return texts.setdefault(value, value)
+    if kind is int or kind is bool:
         return value
     if kind is decimal.Decimal:
         return (str(value),)
@@ -126,23 +134,49 @@ def _key(key: Any) -> str:
 
 
 def decode(stored: Any) -> Any:
-    """The table :func:`encode` stored as ``stored``.
+    """The table :func:`encode` stored as ``stored``, decoded in place: its dicts and lists are reused, each
+    Decimal's 1-tuple replaced by the ``Decimal`` (``stored`` is what :mod:`marshal` has just made, owned by no
+    one else; a machine file's table is mostly strings, and a region list of thousands of them is checked
+    without building it again, issue 36).
 
     Raises
     ------
     _NotStored
-        For anything :func:`encode` does not produce (a foreign or corrupt entry).
+        For anything :func:`encode` does not produce (a foreign or corrupt entry; ``stored`` is then left part
+        decoded, to be dropped).
     """
     kind = type(stored)
     if kind is dict:
-        return {_key(k): decode(v) for k, v in stored.items()}
+        for k, v in stored.items():
+            if type(k) is not str:
+                raise _NotStored(type(k).__name__)
+            t = type(v)
+            if t is not str and t is not int and t is not bool:
+                stored[k] = decode(v)  # a value replaced, no key added: the iteration goes on
+        return stored
     if kind is list:
-        return [decode(v) for v in stored]
+        if stored and _flat_tables(stored):
+            return stored  # nothing to replace (a list of regions, checked in C)
+        for i, v in enumerate(stored):
+            t = type(v)
+            if t is not str and t is not int and t is not bool:
+                stored[i] = decode(v)
+        return stored
     if kind is str or kind is int or kind is bool:
         return stored
     if kind is tuple and len(stored) == 1 and type(stored[0]) is str:
         return decimal.Decimal(stored[0])
     raise _NotStored(kind.__name__)
+
+
+def _flat_tables(rows: list[Any]) -> bool:
+    """Is every item of ``rows`` a dict of ``str`` keys and ``str``, ``int`` or ``bool`` values (a value
+    :func:`decode` leaves as it is)?"""
+    return (set(map(type, rows)) == _DICT and set(map(type, itertools.chain.from_iterable(rows))) <= _STR
+            and set(map(type, itertools.chain.from_iterable(map(dict.values, rows)))) <= _LEAVES)
+
+
+_DICT, _STR, _LEAVES = frozenset((dict,)), frozenset((str,)), frozenset((str, int, bool))
 
 
 def read_entry(entry: str, header: tuple[Any, ...], limit: int) -> Any:

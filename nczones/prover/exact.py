@@ -314,13 +314,8 @@ def _flat(limits: tuple[tuple[str, Fraction | None, Fraction | None], ...]) -> b
 
 
 def reachable(zone: SteppedZone, lo: Fraction, hi: Fraction) -> range:
-    """Indices of regions whose closed reference range meets ``[lo, hi]``."""
-    import bisect
-
-    ups = zone.uptos
-    first = bisect.bisect_left(ups, lo)  # first region with upto >= lo
-    last = bisect.bisect_right(ups, hi)  # last region whose lower end may be <= hi
-    return range(first, min(last + 1, len(ups)))
+    """Indices of regions whose closed reference range meets ``[lo, hi]`` (:meth:`SteppedZone.reached`)."""
+    return zone.reached(lo, hi)
 
 
 def first_point(intervals: list[ParamRange]) -> tuple[Fraction, bool]:
@@ -796,25 +791,16 @@ def _box_box_fits(z: BoxZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
 
 @BOX_FITS.register(SteppedZone)
 def _stepped_box_fits(z: SteppedZone, rng: Rng, lo: Mapping[str, Fraction]) -> bool:
+    """An allow table: the box lies in it (:meth:`SteppedZone.fits`, exact).  A forbid table: every region the
+    box's reference range reaches is flat or has the box's limited range outside its open range
+    (:meth:`SteppedZone.rows_clear`: then the box misses the interior).  Both in the table's integers over a
+    common denominator, one bisection and a run of a list per query (``tests/prover/test_stepped_box_fits.py``
+    holds them to the region-by-region comparisons in rationals they replaced)."""
     r0, r1 = rng(z.reference_axis)
     l0, l1 = rng(z.limited_axis)
     if z.forbid:
-        for i in reachable(z, r0, r1):
-            reg = z.regions[i]
-            if reg.min is not None and reg.min == reg.max:
-                continue  # a flat row has no interior
-            if not ((reg.max is not None and l0 >= reg.max) or (reg.min is not None and l1 <= reg.min)):
-                return False
-    else:
-        if r0 < z.start or r1 > z.regions[-1].upto:
-            return False
-        for i in reachable(z, r0, r1):
-            reg = z.regions[i]
-            if i > 0 and r1 <= z.regions[i - 1].upto:
-                continue
-            if (reg.min is not None and l0 < reg.min) or (reg.max is not None and l1 > reg.max):
-                return False
-    return True
+        return z.rows_clear(r0, r1, l0, l1)
+    return z.fits(r0, r1, l0, l1)
 
 
 @BOX_FITS.register(PolygonZone)

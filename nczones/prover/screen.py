@@ -227,23 +227,50 @@ _SQ_LIMIT = 2**31
 
 
 class _ZoneConstants:
-    """A zone's limits scaled to ``10**scale`` (rounded towards the inside), with range tables."""
+    """A zone's limits scaled to ``10**scale`` (rounded towards the inside), with range tables.
+
+    Each is :func:`_scaled` of the zone's number (its floor or ceiling at the scale, clamped to
+    ``[_NEG, _POS]``, a missing limit the default), computed from the zone's :class:`~nczones.zones.StepTable`:
+    a number ``k / den`` is ``floor(k * 10**scale / den)`` or its ceiling in integers, a column at a time
+    (``tests/prover/test_screen_constants.py`` holds them to :func:`_scaled` of each Fraction).
+    """
 
     def __init__(self, z: SteppedZone, s: int):
-        self.ups_dn = np.array([_scaled(r.upto, s, False, 0) for r in z.regions], dtype=np.int64)
-        self.ups_up = np.array([_scaled(r.upto, s, True, 0) for r in z.regions], dtype=np.int64)
+        t = z.steps()
+        self.ups_dn = np.array(_scaled_column(t.uptos, t.den, s, False), dtype=np.int64)
+        self.ups_up = np.array(_scaled_column(t.uptos, t.den, s, True), dtype=np.int64)
         self.start_dn = _scaled(z.start, s, False, _NEG)
         self.start_up = _scaled(z.start, s, True, _NEG)
         if z.forbid:
-            mins = np.array([_scaled(r.min, s, False, _NEG) for r in z.regions], dtype=np.int64)
-            maxs = np.array([_scaled(r.max, s, True, _POS) for r in z.regions], dtype=np.int64)
+            mins = np.array(_scaled_column(t.mins, t.den, s, False, t.low, _NEG), dtype=np.int64)
+            maxs = np.array(_scaled_column(t.maxs, t.den, s, True, t.high, _POS), dtype=np.int64)
             self.min_t = _RangeTable(mins, np.minimum)
             self.max_t = _RangeTable(maxs, np.maximum)
         else:
-            mins_lo = np.array([_scaled(r.min, s, True, _NEG) for r in z.regions], dtype=np.int64)
-            maxs_hi = np.array([_scaled(r.max, s, False, _POS) for r in z.regions], dtype=np.int64)
+            mins_lo = np.array(_scaled_column(t.mins, t.den, s, True, t.low, _NEG), dtype=np.int64)
+            maxs_hi = np.array(_scaled_column(t.maxs, t.den, s, False, t.high, _POS), dtype=np.int64)
             self.min_t = _RangeTable(mins_lo, np.maximum)
             self.max_t = _RangeTable(maxs_hi, np.minimum)
+
+
+def _scaled_column(ks: list[int], den: int, scale: int, up: bool, missing: int | None = None,
+                   default: int = 0) -> list[int]:
+    """:func:`_scaled` of each ``k / den`` of ``ks`` (``missing``: the value that stands for no number, read as
+    ``default``), exact in integers: ``floor(k * 10**scale / den)`` is ``k * 10**scale // den``, the ceiling
+    ``-(-k * 10**scale // den)``, each clamped to ``[_NEG, _POS]``."""
+    f = 10**scale
+    if f % den == 0:  # den divides the scale's power of ten (a table written to no more places): exact products
+        m = f // den
+        out = [k * m for k in ks]
+    elif up:
+        out = [-(-k * f // den) for k in ks]
+    else:
+        out = [k * f // den for k in ks]
+    if missing is not None and missing in ks:
+        out = [default if k == missing else n for k, n in zip(ks, out)]
+    if out and (max(out) > _POS or min(out) < _NEG):
+        out = [max(min(n, _POS), _NEG) for n in out]
+    return out
 
 
 def _constants(prover: ScreenedProver, z: SteppedZone, s: int) -> _ZoneConstants:

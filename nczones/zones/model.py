@@ -17,16 +17,19 @@ meeting no forbid zone's interior).  ``d = 0`` is plain membership.
 from __future__ import annotations
 
 import enum
-from collections.abc import Mapping
+import itertools
+import math
+from collections.abc import Mapping, Sequence
 from fractions import Fraction
 
 from ..exact import max_bound, min_bound
-from ..precompiled import dataclass  # dataclasses.dataclass, its methods precompiled (start-up)
+from ..precompiled import dataclass, field  # dataclasses' without importing it (start-up)
 
 __all__ = [
     "ZonePoint",
     "Region",
     "SteppedZone",
+    "StepTable",
     "BoxZone",
     "PolygonZone",
     "Zone",
@@ -37,18 +40,39 @@ __all__ = [
     "tip_shifted",
 ]
 
+# not typing's (start-up, issue 36): a type checker takes any TYPE_CHECKING for true
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from typing import Any
+
 Point = Mapping[str, Fraction]
 _ZERO = Fraction(0)
 
 
-def _bisect_left(a: tuple[Fraction, ...], x: Fraction) -> int:
+def _bisect_left(a: Sequence[Any], x: Any) -> int:
     """:func:`bisect.bisect_left`, imported at the first search (a machine without stepped zones makes none, and
     ``_bisect`` is a C extension to load at start-up, boot44); the name is then the function itself."""
-    global _bisect_left
-    from bisect import bisect_left
+    global _bisect_left, _bisect_right
+    from bisect import bisect_left, bisect_right
 
-    _bisect_left = bisect_left
+    _bisect_left, _bisect_right = bisect_left, bisect_right
     return bisect_left(a, x)
+
+
+def _bisect_right(a: Sequence[Any], x: Any) -> int:
+    """:func:`bisect.bisect_right`, imported at the first search (as :func:`_bisect_left`)."""
+    _bisect_left((), 0)
+    return _bisect_right(a, x)
+
+
+def _floor_times(q: Fraction, den: int) -> int:
+    """``floor(q * den)`` exactly, in integers."""
+    return q.numerator * den // q.denominator
+
+
+def _ceil_times(q: Fraction, den: int) -> int:
+    """``ceil(q * den)`` exactly, in integers."""
+    return -(-q.numerator * den // q.denominator)
 
 
 class ZonePoint(enum.Enum):
@@ -86,6 +110,85 @@ class Region:
     max: Fraction | None = None
 
 
+#: The setters of a Region's three slots (what its ``__init__`` does, one call each).
+_REGION_SETTERS = tuple(Region.__dict__[name].__set__ for name in ("upto", "min", "max"))
+
+
+def _regions(uptos: list[Fraction], mins: list[Fraction | None], maxs: list[Fraction | None]) -> tuple[Region, ...]:
+    """``tuple(map(Region, uptos, mins, maxs))``, a column at a time: the instances made by ``object.__new__`` and
+    each slot set by its descriptor over the column, in C (``Region.__init__`` does nothing else: it sets the
+    three fields; a Python call a region costs as much as the rest of reading a table, issue 36).
+    ``tests/zones/test_step_table.py`` holds the result to ``Region(...)`` and the fields to these three."""
+    made = list(map(object.__new__, itertools.repeat(Region, len(uptos))))
+    columns: tuple[list[Any], ...] = (uptos, mins, maxs)
+    for setter, column in zip(_REGION_SETTERS, columns):
+        any(map(setter, made, column))  # each call returns None: any() runs the map to its end
+    return tuple(made)
+
+
+def _present(column: list[int | None]) -> list[int]:
+    """The integers of ``column`` (``column`` itself when it holds no None: found in C, no copy)."""
+    if None not in column:
+        return column  # type: ignore[return-value]  # (no None in it)
+    return [v for v in column if v is not None]
+
+
+def _filled(column: list[int | None], fill: int) -> list[int]:
+    """``column`` with each None replaced by ``fill`` (``column`` itself when it holds none)."""
+    if None not in column:
+        return column  # type: ignore[return-value]  # (no None in it)
+    return [fill if v is None else v for v in column]
+
+
+class StepTable:
+    """A stepped table's numbers as integers over one common denominator (made once per zone).
+
+    ``den`` is a common denominator of ``from``, every ``upto``, ``min`` and ``max`` (their least common
+    multiple when made from a zone's Fractions, :meth:`of`; the power of ten of a machine file's decimals
+    when read from it, :meth:`SteppedZone.from_integers`); ``start``, ``uptos``, ``mins`` and ``maxs`` are those
+    values times ``den``, exact integers, ``mins[i]`` / ``maxs[i]`` being ``low`` / ``high`` where region
+    ``i`` has no ``min`` / ``max``.  ``low`` is less and ``high`` greater than every finite value of the table,
+    so the largest ``min`` of a run of regions is ``low`` only when none of them has one (and likewise the
+    smallest ``max``), and a region with one missing bound never reads as flat (``mins[i] == maxs[i]``).
+
+    A rational ``q`` compares with an entry ``k / den`` as ``q * den`` with ``k``: ``q >= k / den`` exactly
+    when ``floor(q * den) >= k`` and ``q <= k / den`` exactly when ``ceil(q * den) <= k`` (``k`` an integer),
+    so one floor or ceiling per query bound turns every comparison with the table into one of integers.
+
+    A plain class with slots, not a dataclass: it is made only for a machine with a stepped zone (a dataclass
+    costs every start-up its creation, boot44).
+    """
+
+    __slots__ = ("den", "start", "uptos", "mins", "maxs", "low", "high")
+
+    def __init__(self, den: int, start: int, uptos: list[int], mins: list[int | None], maxs: list[int | None]):
+        self.den, self.start, self.uptos = den, start, uptos
+        finite = [start, min(uptos), max(uptos)]
+        for column in (mins, maxs):
+            given = _present(column)
+            if given:
+                finite += (min(given), max(given))
+        self.low, self.high = min(finite) - 1, max(finite) + 1
+        self.mins = _filled(mins, self.low)
+        self.maxs = _filled(maxs, self.high)
+
+    @classmethod
+    def of(cls, zone: SteppedZone) -> StepTable:
+        """The table of ``zone``'s Fractions over the least common multiple of their denominators."""
+        regions = zone.regions
+        ups = [r.upto for r in regions]
+        lows = [r.min for r in regions]
+        highs = [r.max for r in regions]
+        dens = {v.denominator for v in ups}
+        dens.update([v.denominator for v in lows if v is not None])
+        dens.update([v.denominator for v in highs if v is not None])
+        den = math.lcm(zone.start.denominator, *dens)
+        return cls(den, zone.start.numerator * (den // zone.start.denominator),
+                   [v.numerator * (den // v.denominator) for v in ups],
+                   [None if v is None else v.numerator * (den // v.denominator) for v in lows],
+                   [None if v is None else v.numerator * (den // v.denominator) for v in highs])
+
+
 @dataclass(frozen=True, slots=True)
 class SteppedZone:
     """A stepped limit-value table.
@@ -112,11 +215,99 @@ class SteppedZone:
     regions: tuple[Region, ...]
     forbid: bool = False
     point: ZonePoint = ZonePoint.MACHINE
+    # the table in integers, made at the first query that needs it (not an argument: replace() and
+    # translated() make a new zone, which makes its own; not compared, hashed or shown: a function of the rest)
+    _steps: StepTable | None = field(default=None, init=False, repr=False, compare=False)
     kind = "stepped"  # a class attribute, not a field (unannotated: no typing.ClassVar to import at start-up)
 
     @property
     def axes(self) -> tuple[str, ...]:
         return (self.reference_axis, self.limited_axis)
+
+    def steps(self) -> StepTable:
+        """The table in integers over a common denominator (:class:`StepTable`), made once."""
+        got = self._steps
+        if got is None:
+            got = StepTable.of(self)
+            object.__setattr__(self, "_steps", got)  # a cache of a frozen instance (the lexer's words do so)
+        return got
+
+    @classmethod
+    def from_integers(cls, name: str, reference_axis: str, limited_axis: str, den: int, start: int,
+                      uptos: list[int], mins: list[int | None], maxs: list[int | None], forbid: bool = False,
+                      point: ZonePoint = ZonePoint.MACHINE) -> SteppedZone:
+        """The table whose ``from`` is ``start / den``, region ``i`` reaching ``uptos[i] / den`` with limits
+        ``mins[i] / den`` and ``maxs[i] / den`` (None: none), its :class:`StepTable` made of the same integers.
+
+        How a machine file's table is read (issue 36): the regions' Fractions are made from these integers
+        here, so the table in integers is exact by construction, with no second pass over the Fractions; a
+        limit written many times is one Fraction.
+
+        >>> z = SteppedZone.from_integers("t", "X", "Y", 10, 0, [15, 30], [None, -5], [20, 20])
+        >>> z == SteppedZone("t", "X", "Y", Fraction(0), (Region(Fraction(3, 2), None, Fraction(2)),
+        ...                                             Region(Fraction(3), Fraction(-1, 2), Fraction(2))))
+        True
+        """
+        limits: dict[int | None, Fraction | None] = {k: Fraction(k, den) for k in {*mins, *maxs} if k is not None}
+        regions = _regions(list(map(Fraction, uptos, itertools.repeat(den))), list(map(limits.get, mins)),
+                           list(map(limits.get, maxs)))
+        zone = cls(name, reference_axis, limited_axis, Fraction(start, den), regions, forbid, point)
+        object.__setattr__(zone, "_steps", StepTable(den, start, uptos, mins, maxs))
+        return zone
+
+    def reached(self, lo: Fraction, hi: Fraction) -> range:
+        """Indices of the regions whose closed reference range ``[lower, upto]`` meets ``[lo, hi]``.
+
+        The first region with ``upto >= lo`` up to the first with ``upto > hi`` (or the last region): the
+        bisections of the table's integers, ``upto >= lo`` being ``upto * den >= ceil(lo * den)`` and
+        ``upto > hi`` being ``upto * den > floor(hi * den)``.
+        """
+        t = self.steps()
+        first = _bisect_left(t.uptos, _ceil_times(lo, t.den))
+        last = _bisect_right(t.uptos, _floor_times(hi, t.den))
+        return range(first, min(last + 1, len(t.uptos)))
+
+    def fits(self, r0: Fraction, r1: Fraction, l0: Fraction, l1: Fraction) -> bool:
+        """Does the closed box ``[r0, r1] x [l0, l1]`` (reference x limited axis, ``r0 <= r1``) lie in the zone?
+
+        Exact.  It does when ``[r0, r1]`` lies in ``[from, upto[last]]`` and every region whose reference range
+        the box meets (``(upto[i-1], upto[i]]``, the first one closed) holds ``[l0, l1]``: the regions
+        ``first..e``, ``first`` the first with ``upto >= r0`` and ``e`` the first with ``upto >= r1`` (a region
+        after ``e`` starts at ``upto[e] >= r1`` or later, open, so the box misses it), whose largest ``min``
+        must be at most ``l0`` and smallest ``max`` at least ``l1``.  In the integers of :meth:`steps` (see
+        :class:`StepTable`): two bisections and the largest and smallest entry of two runs of a list, so a box
+        over thousands of regions costs no rational arithmetic.  An inverted ``r0 > r1`` is not shown to fit.
+        """
+        t = self.steps()
+        den, uptos = t.den, t.uptos
+        c1 = _ceil_times(r1, den)
+        if r0 > r1 or _floor_times(r0, den) < t.start or c1 > uptos[-1]:
+            return False
+        first = _bisect_left(uptos, _ceil_times(r0, den))
+        end = _bisect_left(uptos, c1) + 1
+        highest = max(t.mins[first:end])
+        if highest != t.low and _floor_times(l0, den) < highest:
+            return False
+        lowest = min(t.maxs[first:end])
+        return lowest == t.high or _ceil_times(l1, den) <= lowest
+
+    def rows_clear(self, r0: Fraction, r1: Fraction, l0: Fraction, l1: Fraction) -> bool:
+        """Is ``[l0, l1]`` outside the open limited range of every region :meth:`reached` by ``[r0, r1]``?
+
+        A flat region (``min == max``) has no interior and counts as clear.  Then the box ``[r0, r1] x [l0,
+        l1]`` meets no region's interior, nor the interior at a boundary (which lies in both neighbours' open
+        ranges): it misses the zone's interior.  (It may miss it also when this says False, at a boundary the
+        box only touches.)  Exact in the integers of :meth:`steps`.
+        """
+        t = self.steps()
+        fl0, cl1 = _floor_times(l0, t.den), _ceil_times(l1, t.den)
+        mins, maxs, low, high = t.mins, t.maxs, t.low, t.high
+        for i in self.reached(r0, r1):
+            lo, hi = mins[i], maxs[i]
+            if lo == hi or (hi != high and fl0 >= hi) or (lo != low and cl1 <= lo):
+                continue
+            return False
+        return True
 
     @property
     def uptos(self) -> tuple[Fraction, ...]:
@@ -143,10 +334,11 @@ class SteppedZone:
         return None, comparisons
 
     def region_bisect(self, r: Fraction) -> int | None:
-        """The same lookup by binary search (O(log n))."""
+        """The same lookup by binary search (O(log n)), in the integers of :meth:`steps`."""
         if r < self.start or r > self.regions[-1].upto:
             return None
-        return _bisect_left(self.uptos, r)
+        t = self.steps()
+        return _bisect_left(t.uptos, _ceil_times(r, t.den))
 
     def contains(self, p: Point) -> bool:
         """Closed-set membership."""
@@ -161,17 +353,11 @@ class SteppedZone:
         return self.box_meets_interior(p, _ZERO)
 
     def box_inside(self, p: Point, d: Fraction) -> bool:
-        """Does the closed box of half-width ``d`` around ``p`` lie in the zone?"""
+        """Does the closed box of half-width ``d`` (``d >= 0``) around ``p`` lie in the zone?  (:meth:`fits`.)"""
         r, lim = p[self.reference_axis], p[self.limited_axis]
-        lo, hi = r - d, r + d
-        if lo < self.start or hi > self.regions[-1].upto:
-            return False
-        for i, reg in enumerate(self.regions):
-            a, b = self.region_lower(i), reg.upto
-            touches = lo <= b and (hi >= a if i == 0 else hi > a)
-            if touches and not (_ge(lim - d, reg.min) and _le(lim + d, reg.max)):
-                return False
-        return True
+        if d:
+            return self.fits(r - d, r + d, lim - d, lim + d)
+        return self.fits(r, r, lim, lim)
 
     def box_meets_interior(self, p: Point, d: Fraction) -> bool:
         """Does the closed box of half-width ``d`` meet the zone's interior?"""

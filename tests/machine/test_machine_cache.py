@@ -305,3 +305,40 @@ def test_verdicts_equal_with_and_without_the_cache(cache, monkeypatch):
                        params=case.get("params", []), recovery=case.get("recovery"))
             got.append(json.dumps([r.verdict.label, [(v.line, v.zone, str(v.point)) for v in r.violations]]))
         assert got[0] == got[1] == got[2], case["name"]
+
+
+def test_decode_reads_the_stored_table_in_place():
+    """The stored containers are reused (a region list of thousands of tables is not built again), each
+    Decimal's 1-tuple replaced by the Decimal, written as it was (issue 36, table45)."""
+    stored = mc.encode({"a": [{"x": decimal.Decimal("1.50"), "y": "t"}, 2, True], "b": {"c": decimal.Decimal("-0")}})
+    rows, row = stored["a"], stored["a"][0]
+    got = mc.decode(stored)
+    assert got is stored and got["a"] is rows and got["a"][0] is row
+    assert shape(got) == shape({"a": [{"x": decimal.Decimal("1.50"), "y": "t"}, 2, True],
+                                "b": {"c": decimal.Decimal("-0")}})
+    assert str(got["a"][0]["x"]) == "1.50" and str(got["b"]["c"]) == "-0"
+
+
+def test_a_stored_table_sharing_a_container_is_read_right_or_missed(cache):
+    """An entry whose table holds one container twice (no entry nczones writes does: a foreign one) decodes the
+    container once; the second visit meets a Decimal, a value encode never stores, and the entry is a miss."""
+    path, source, entry = _filled(cache, b'a = { x = 1.50 }\nb = { x = 1.50 }\n')
+    stored = list(marshal.loads(entry.read_bytes()))
+    shared = {"x": ("1.50",)}
+    stored[-1] = {"a": shared, "b": shared}
+    entry.write_bytes(marshal.dumps(tuple(stored)))
+    assert _is_miss(path, source)
+
+
+def test_equal_strings_are_stored_once():
+    """encode makes equal strings one object, which marshal writes once: read back, the keys and repeated values
+    of a long region list are one object each (fewer strings to make at every start, issue 36)."""
+    rows = [{"upto": str(k + 1), "max": "300"} for k in range(3)]
+    rows.append({"upto": "".join(["30", "0"]), "max": "".join(["30", "0"])})  # equal texts, distinct objects
+    stored = mc.encode({"regions": rows})
+    back = marshal.loads(marshal.dumps(stored))
+    keys = [k for row in back["regions"] for k in row]
+    assert len({id(k) for k in keys if k == "upto"}) == 1
+    assert len({id(row["max"]) for row in back["regions"]}) == 1
+    assert back["regions"][3]["upto"] is back["regions"][3]["max"]
+    assert mc.decode(back) == {"regions": rows}

@@ -16,7 +16,7 @@ import decimal
 from fractions import Fraction as F
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from nczones import machine
@@ -141,3 +141,100 @@ def test_region_diagnostics_point_at_their_lines():
     (d,) = err.value.diagnostics
     assert d.code == "ZN122" and "region 2501" in d.message
     assert d.span is not None and d.span.line == 15 + 2501 and d.span.text.strip().startswith('{upto = "2501", min')
+
+
+# --------------------------------------------------------------------------- a table's regions in the common form
+
+_region_numbers = st.one_of(
+    st.sampled_from(["0", "-0", "1", "2", "2.0", "-1", "5", "10", "10.5", "1000000", "1000000.0000001", "-1000000.5",
+                     "12.", "+3", "1e3", " 1", "1_0", "inf", "", "٣", "0.1000000000000000000000000000001"]),
+    st.from_regex(r"-?[0-9]{1,3}(\.[0-9]{0,3})?", fullmatch=True),
+    st.integers(-3, 20).map(str),
+)
+
+
+@st.composite
+def region_rows(draw) -> list[str]:
+    """Inline tables of a table's regions, mostly well formed (increasing uptos, min <= max), with the odd
+    number, key, order or unquoted value that the readers must report alike."""
+    rows = []
+    upto = 0
+    for _ in range(draw(st.integers(1, 6))):
+        upto += draw(st.integers(0, 3))
+        parts = [f'upto = "{draw(_region_numbers) if draw(st.integers(0, 9)) == 0 else upto}"']
+        lo = draw(st.none() | st.integers(-5, 5))
+        hi = draw(st.none() | st.integers(-5, 5))
+        if lo is not None:
+            parts.append(f'min = "{draw(_region_numbers) if draw(st.integers(0, 9)) == 0 else lo}"')
+        if hi is not None:
+            parts.append(f'max = "{draw(_region_numbers) if draw(st.integers(0, 9)) == 0 else hi}"')
+        odd = draw(st.integers(0, 19))
+        if odd == 0:
+            parts.append('mni = "1"')
+        elif odd == 1:
+            parts = parts[1:]
+        elif odd == 2:
+            parts = [p.replace('"', "") for p in parts]  # TOML numbers: Decimal and int values
+        elif odd == 3:
+            parts.reverse()
+        elif odd == 5:
+            parts.append('min = ["1"]' if lo is None else 'max = { a = "1" }')
+        elif odd == 6:
+            parts[0] = f'upto = "{upto}\\n{upto + 1}"'  # a TOML escape: a newline in the text
+        elif odd == 7:
+            parts.append("max = true" if hi is None else "min = 2")
+        rows.append("{ " + ", ".join(parts) + " }" if odd != 4 else '"5"')
+    return rows
+
+
+def _table_text(rows: list[str], start: str = '"0"') -> str:
+    return ('[machine]\naxes = ["X", "Y"]\n[machine.rapid]\nX = "1"\nY = "1"\n[machine.reference]\nX = "0"\nY = "0"\n'
+            '[[zones]]\nname = "t"\nkind = "stepped"\nreference_axis = "X"\nlimited_axis = "Y"\nfrom = ' + start + '\n'
+            'regions = [\n' + ",\n".join(rows) + "\n]\n")
+
+
+def _outcome(text: str):
+    try:
+        m = parse_machine(text, "m.toml")
+    except MachineFileError as err:
+        return [(d.code, d.message, d.span) for d in err.diagnostics]
+    return m.allowed.zones
+
+
+@settings(max_examples=300, deadline=None)
+@given(region_rows(), st.sampled_from(['"0"', '"-1"', '"1"', "0", '"x"']))
+@example(['{ upto = "1", max = "1000000.0000001" }'], '"0"')
+@example(['{ upto = "1", min = "-1000000.5" }'], '"0"')
+@example(['{ upto = "1000000.0000001" }'], '"0"')
+@example(['{ upto = "1", min = "2", max = "1" }'], '"0"')
+@example(['{ upto = "1" }', '{ upto = "1.0" }'], '"0"')
+@example(['{ upto = "0" }'], '"0"')
+@example(['{ upto = "1\\n2" }'], '"0"')
+@example(['{ upto = "1" }', '{ upto = "2", min = ["1"] }'], '"0"')
+@example(['{ upto = "1", min = "1", max = "1" }', '{ upto = "2", min = "-0", max = "0.000" }'], '"-0"')
+def test_common_form_regions_read_as_the_region_loop_reads_them(rows, start):
+    """The regions read by ``_plain_table`` (the common form) against the loop that reads any form and reports
+    each problem: the same zones, or the same diagnostics (code, message, span) -- the loop alone decides those."""
+    import nczones.machine as machine
+
+    text = _table_text(rows, start)
+    got = _outcome(text)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(machine, "_plain_table", lambda raw, start: None)
+        want = _outcome(text)
+    assert got == want
+    if isinstance(got, tuple):
+        zone = got[0]
+        assert all(type(v) is F for r in zone.regions for v in (r.upto, r.min, r.max) if v is not None)
+
+
+def test_a_table_of_4096_regions_takes_the_common_form(monkeypatch):
+    import nczones.machine as machine
+
+    rows = [f'{{upto = "{(k + 1) * 0.976562:.6f}", min = "{-1 - k % 7}", max = "{300 + k % 5}"}}' for k in range(4096)]
+    calls = []
+    plain = machine._plain_table
+    monkeypatch.setattr(machine, "_plain_table", lambda raw, start: calls.append(plain(raw, start)) or calls[-1])
+    (zone,) = parse_machine(_table_text(rows), "m.toml").allowed.zones
+    assert calls[0] is not None and len(zone.regions) == 4096
+    assert zone.regions[4095] == machine.Region(F("3999.997952"), F(-1 - 4095 % 7), F(300 + 4095 % 5))
