@@ -384,28 +384,77 @@ def _rect_dist(p: tuple[Fraction, Fraction], rect: Any) -> Fraction:
 
 
 def _stepped_eroded_rects(zone: SteppedZone, d: Fraction) -> list[Any]:
-    """Closed rectangles whose union is the closure of {q : box(q, d) fits the zone}."""
+    """Closed rectangles whose union is the closure of {q : box(q, d) fits the zone}, in order along the
+    reference axis (the spans between consecutive cuts and the cuts themselves, each after the one before).
+
+    At each span's middle the regions a box of half-width ``d`` reaches are one run (:meth:`SteppedZone.reached`
+    less a region it only touches at its open lower end, as :meth:`SteppedZone.box_inside` counts them): their
+    largest ``min`` and smallest ``max`` bound the rectangle.  Made once per zone and margin
+    (:func:`_eroded`): a depth is asked at thousands of points of a violating piece (issue 36: a 12-line
+    program against a 4,096-region table ran for minutes, every point rebuilding them over every region)."""
     regs = zone.regions
     cuts = sorted({zone.start + d, regs[-1].upto - d} | {r.upto + s for r in regs for s in (-d, d)})
     cuts = [c for c in cuts if zone.start + d <= c <= regs[-1].upto - d]
     rects = []
-    spans = [(c, c) for c in cuts] + list(zip(cuts, cuts[1:]))
+    spans = sorted([(c, c) for c in cuts] + list(zip(cuts, cuts[1:])))
     for a, b in spans:
         mid = (a + b) / 2
         lo_r, hi_r = mid - d, mid + d
         los, his = [], []
-        for i, reg in enumerate(regs):
-            ra, rb = zone.region_lower(i), reg.upto
-            if lo_r <= rb and (hi_r >= ra if i == 0 else hi_r > ra):
-                if reg.min is not None:
-                    los.append(reg.min + d)
-                if reg.max is not None:
-                    his.append(reg.max - d)
+        for i in zone.reached(lo_r, hi_r):
+            reg = regs[i]
+            if i > 0 and not hi_r > regs[i - 1].upto:
+                continue  # touches the region's open lower end only
+            if reg.min is not None:
+                los.append(reg.min + d)
+            if reg.max is not None:
+                his.append(reg.max - d)
         lo = max(los) if los else None
         hi = min(his) if his else None
         if lo is None or hi is None or lo <= hi:
             rects.append(((a, b), (lo, hi)))
     return rects
+
+
+_ERODED: dict[tuple[int, Fraction], tuple[SteppedZone, list[Any], list[Fraction]]] = {}
+
+
+def _eroded(zone: SteppedZone, d: Fraction) -> tuple[list[Any], list[Fraction]]:
+    """:func:`_stepped_eroded_rects` of ``zone`` and ``d``, and their reference ends (``b`` of each), kept for the
+    last few zones and margins (the zone held with them, so its id is not reused meanwhile)."""
+    key = (id(zone), d)
+    hit = _ERODED.get(key)
+    if hit is None or hit[0] is not zone:
+        if len(_ERODED) >= 16:
+            _ERODED.pop(next(iter(_ERODED)))
+        rects = _stepped_eroded_rects(zone, d)
+        hit = _ERODED[key] = (zone, rects, [r[0][1] for r in rects])
+    return hit[1], hit[2]
+
+
+def _nearest_rect_dist(q: tuple[Fraction, Fraction], rects: list[Any], ends: list[Fraction]) -> Fraction:
+    """``min(_rect_dist(q, r) for r in rects)`` for rectangles in order along the reference axis (their ranges
+    ``[a, b]`` with ``a`` and ``b`` nondecreasing, ``ends`` the ``b``): searched outwards from the first one that
+    ends at or after ``q``'s reference value, each way only while the reference gap alone is below the best
+    distance (a rectangle farther along is farther by at least its gap, which only grows)."""
+    from bisect import bisect_left
+
+    x = q[0]
+    k = bisect_left(ends, x)
+    best: Fraction | None = None
+    for j in range(k, len(rects)):  # ends >= x: the gap is a - x where positive
+        gap = rects[j][0][0] - x
+        if best is not None and gap >= best:
+            break
+        v = _rect_dist(q, rects[j])
+        best = v if best is None or v < best else best
+    for j in range(k - 1, -1, -1):  # ends < x: the gap x - b
+        if best is not None and x - ends[j] >= best:
+            break
+        v = _rect_dist(q, rects[j])
+        best = v if best is None or v < best else best
+    assert best is not None
+    return best
 
 
 def point_depth(zone: Zone, p: Mapping[str, Fraction], margin: Fraction = F0) -> Fraction:
@@ -459,8 +508,12 @@ def _box_depth(zone: BoxZone, p: Mapping[str, Fraction], d: Fraction) -> Fractio
 def _stepped_depth(zone: SteppedZone, p: Mapping[str, Fraction], d: Fraction) -> Fraction:
     q = (p[zone.reference_axis], p[zone.limited_axis])
     if zone.forbid:
+        # a region's slack on the reference axis is positive only where q lies within d of its range, so only
+        # the regions [q - d, q + d] reaches can raise the depth above 0
         best = F0
-        for i, reg in enumerate(zone.regions):
+        regs = zone.regions
+        for i in zone.reached(q[0] - d, q[0] + d):
+            reg = regs[i]
             if reg.min is not None and reg.max is not None and not reg.min < reg.max:
                 continue
             rect = ((zone.region_lower(i) - d, reg.upto + d),
@@ -472,10 +525,10 @@ def _stepped_depth(zone: SteppedZone, p: Mapping[str, Fraction], d: Fraction) ->
                 slacks.append(rect[1][1] - q[1])
             best = max(best, min(slacks))
         return best
-    rects = _stepped_eroded_rects(zone, d)
+    rects, ends = _eroded(zone, d)
     if not rects:
         return F0
-    return min(_rect_dist(q, r) for r in rects)
+    return _nearest_rect_dist(q, rects, ends)
 
 
 @POINT_DEPTH.register(PolygonZone)
