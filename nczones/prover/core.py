@@ -134,6 +134,9 @@ class Prover:
         self.boxable = all(ARC_ENCLOSURES.of(z)(z) for z in self.zones)
         self.has_tip_zones = any(z.point is ZonePoint.TIP for z in self.zones)
         self._tip_provers: dict[tuple, Prover] = {}
+        #: the depth reported so far for each block that already is a violation (set by :func:`verify_segments`):
+        #: a later motion of the block only matters when it is deeper (:meth:`_no_deeper`)
+        self.known_depth: dict[int, Fraction] = {}
 
     def _tip_prover(self, shift: dict[str, Fraction]) -> Prover:
         """The prover of segments whose tool tip is ``shift`` away from the machine position on axes besides
@@ -696,6 +699,9 @@ class Prover:
                 if found is None:
                     continue
                 self.stats["exact_decided"] += 1
+                known = self.known_depth.get(seg.block)
+                if known is not None and self._no_deeper(seg, pieces, known):
+                    return Outcome(engine="exact")  # the block's violation stands as reported: nothing to add
                 # Z3 confirms and provides the witness parameter (the exact tier's own parameter
                 # once the budget is spent or when a limit stops the solver)
                 t_model = None
@@ -733,6 +739,23 @@ class Prover:
             if iv:
                 found.append((z, iv))
         return found or None
+
+    def _no_deeper(self, seg: Segment, pieces: Sequence[LinePiece], known: Fraction) -> bool:
+        """Is no violating piece of ``seg`` deeper than ``known`` (its block's reported depth)?  Then the
+        violation :meth:`_line_violation` would build for it (a witness, a first exit, Z3's confirmation, the
+        depth: a few ms a motion) changes nothing: :func:`verify_segments` keeps the block's first violation and
+        only a greater depth.  Sound: each piece and zone's :func:`~nczones.prover.exact.line_depth_bound` is at
+        least the depth :meth:`_line_violation` would find there, and a zone :func:`~nczones.prover.exact.
+        decidable` does not decide answers no."""
+        for pc in pieces:
+            for z in self.zones:
+                if not ex.decidable(z):
+                    return False
+                if ex.line_depth_bound(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length,
+                                       self.tool_axis) > known and \
+                        ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis):
+                    return False
+        return True
 
     def _line_violation(self, seg: Segment, piece: LinePiece, t_model: Fraction | None, params: Params,
                         engine: str) -> Violation:
@@ -1317,11 +1340,13 @@ def verify_segments(
 
                     violations[old] = replace(violations[old], depth=out.violation.depth,
                                               depth_exact=violations[old].depth_exact and out.violation.depth_exact)
+                    prover.known_depth[seg.block] = out.violation.depth
                 return True
             if len(violations) >= max_violations:
                 return False
             seen_blocks.add(seg.block)
             v = out.violation
+            prover.known_depth[seg.block] = v.depth
             if seg.frame is not None and v.frame is None:  # for the program point, reports only
                 from dataclasses import replace
 

@@ -44,6 +44,7 @@ __all__ = [
     "first_point",
     "point_depth",
     "line_depth",
+    "line_depth_bound",
     "zone_constants",
     "outside_point",
     "box_certainly_violates",
@@ -600,6 +601,45 @@ def line_depth(
             best, best_t = v, t
     assert best is not None  # t = 0 and t = 1 are candidates
     return best, best_t, exact and LINE_DEPTH_EXACT.of(zone)
+
+
+def line_depth_bound(zone: Zone, p0: Sequence[Fraction], p1: Sequence[Fraction], axes: Sequence[str],
+                     margin: Fraction, tool_length: Fraction, tool_axis: str | None) -> Fraction:
+    """An upper bound of :func:`line_depth`'s depth over the piece ``p0 -> p1``, from the depths at its two ends
+    (:data:`LINE_DEPTH_BOUND`, per zone kind).
+
+    Soundness (``tests/prover/test_line_depth_bound.py`` holds every kind to it): :func:`point_depth` is
+    1-Lipschitz in the L-infinity norm of the zone's coordinates for every zone kind (an L-infinity distance to a
+    closed set -- an eroded box, a union of eroded rectangles, a polygon's boundary -- or a minimum or maximum of
+    coordinate differences, each of which changes by at most as much as the point moves, and the maximum of such
+    with a constant); the tool-tip shift moves every point alike.  A 1-Lipschitz ``f`` on a piece of L-infinity
+    length ``L`` has ``f(t) <= f(0) + t L`` and ``f(t) <= f(1) + (1 - t) L``, so ``f(t) <= (f(0) + f(1) + L) / 2``
+    everywhere on it.  An allowed box's depth is also convex (the maximum of 0 and affine functions of the
+    point), so along a piece it is at most its larger end.  :func:`line_depth` returns ``f`` at some ``t``.
+
+    >>> F = Fraction
+    >>> box, hole = BoxZone("b", (("X", F(0), F(10)),)), BoxZone("h", (("X", F(0), F(10)),), forbid=True)
+    >>> line_depth_bound(box, (F(8),), (F(14),), ("X",), F(0), F(0), None)
+    Fraction(4, 1)
+    >>> line_depth_bound(hole, (F(-2),), (F(4),), ("X",), F(0), F(0), None), line_depth(hole, (F(-2),), (F(4),), ("X",), F(0), F(0), None)[0]
+    (Fraction(5, 1), Fraction(4, 1))
+    """
+    ln = _Line(p0, p1, axes, zone, tool_length, tool_axis)
+    zaxes = [a for a in zone.axes if a in ln.index]
+    ends = [ln.ends(a) for a in zaxes]
+    f0 = point_depth(zone, {a: e[0] for a, e in zip(zaxes, ends)}, margin)
+    f1 = point_depth(zone, {a: e[1] for a, e in zip(zaxes, ends)}, margin)
+    if LINE_DEPTH_BOUND.of(zone)(zone):
+        return max(f0, f1)
+    length = max((abs(b - a) for a, b in ends), default=F0)
+    return (f0 + f1 + length) / 2
+
+
+#: Is the zone's :func:`point_depth` convex in the point (then along a piece it is at most its larger end)?  An
+#: allowed box's is; fallback: no (the 1-Lipschitz bound of :func:`line_depth_bound`).
+LINE_DEPTH_BOUND: KindTable[Callable[[Any], bool]] = KindTable("prover.exact.line_depth_convex",
+                                                               fallback=lambda z: False)
+LINE_DEPTH_BOUND.set(BoxZone, lambda z: not z.forbid)
 
 
 def _breakpoints(lines: Sequence[tuple[Fraction, Fraction]], max_candidates: int) -> tuple[set[Fraction], bool]:
