@@ -137,6 +137,7 @@ class Prover:
         #: the depth reported so far for each block that already is a violation (set by :func:`verify_segments`):
         #: a later motion of the block only matters when it is deeper (:meth:`_no_deeper`)
         self.known_depth: dict[int, Fraction] = {}
+        self._violations_memo: dict[tuple[Any, ...], list[ParamRange]] = {}  # _piece_violation's (zones: self's)
 
     def _tip_prover(self, shift: dict[str, Fraction]) -> Prover:
         """The prover of segments whose tool tip is ``shift`` away from the machine position on axes besides
@@ -735,10 +736,24 @@ class Prover:
     def _exact_line(self, seg: Segment, piece: LinePiece) -> list | None:
         found = []
         for z in self.zones:
-            iv = ex.line_violation(z, piece.p0, piece.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+            iv = self._piece_violation(z, piece, seg.tool_length)
             if iv:
                 found.append((z, iv))
         return found or None
+
+    def _piece_violation(self, z: Zone, piece: LinePiece, tool_length: Fraction) -> list[ParamRange]:
+        """``ex.line_violation`` of ``z`` on ``piece``, kept for the pieces of the last few segments: a violating
+        segment asks it of each piece up to four times (its decision, its first exit, its witness, its depth),
+        and against a table of thousands of regions one answer costs as much as the rest of the segment."""
+        key = (id(z), piece.p0, piece.p1, tool_length)
+        memo = self._violations_memo
+        got = memo.get(key)
+        if got is None:
+            if len(memo) >= 64:
+                memo.clear()
+            got = memo[key] = ex.line_violation(z, piece.p0, piece.p1, self.axes, self.margin, tool_length,
+                                                self.tool_axis)
+        return got
 
     def _no_deeper(self, seg: Segment, pieces: Sequence[LinePiece], known: Fraction) -> bool:
         """Is no violating piece of ``seg`` deeper than ``known`` (its block's reported depth)?  Then the
@@ -753,7 +768,7 @@ class Prover:
                     return False
                 if ex.line_depth_bound(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length,
                                        self.tool_axis) > known and \
-                        ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis):
+                        self._piece_violation(z, pc, seg.tool_length):
                     return False
         return True
 
@@ -767,7 +782,7 @@ class Prover:
             per_zone = []
             for z in self.zones:
                 if ex.decidable(z):
-                    iv = ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+                    iv = self._piece_violation(z, pc, seg.tool_length)
                     if iv:
                         per_zone.append((iv[0].lo, z))
                 else:
@@ -788,7 +803,7 @@ class Prover:
         if not bad:  # the model point is not a violation: use the exact first interval
             for z in self.zones:
                 if ex.decidable(z):
-                    iv = ex.line_violation(z, piece.p0, piece.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
+                    iv = self._piece_violation(z, piece, seg.tool_length)
                     if iv:
                         t = iv[0].sample()
                         break
@@ -805,7 +820,7 @@ class Prover:
         for pc in pieces:
             for z in self.zones:
                 dv, _, dex = ex.line_depth(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis)
-                if ex.decidable(z) and not ex.line_violation(z, pc.p0, pc.p1, self.axes, self.margin, seg.tool_length, self.tool_axis):
+                if ex.decidable(z) and not self._piece_violation(z, pc, seg.tool_length):
                     continue
                 if not ex.decidable(z) and z not in bad:
                     continue
