@@ -137,7 +137,7 @@ class Prover:
         #: the depth reported so far for each block that already is a violation (set by :func:`verify_segments`):
         #: a later motion of the block only matters when it is deeper (:meth:`_no_deeper`)
         self.known_depth: dict[int, Fraction] = {}
-        self._violations_memo: dict[tuple[Any, ...], list[ParamRange]] = {}  # _piece_violation's (zones: self's)
+        self._violations_memo: dict[tuple[Any, ...], list[ex.ParamRange]] = {}  # _piece_violation's (self's zones)
 
     def _tip_prover(self, shift: dict[str, Fraction]) -> Prover:
         """The prover of segments whose tool tip is ``shift`` away from the machine position on axes besides
@@ -741,7 +741,7 @@ class Prover:
                 found.append((z, iv))
         return found or None
 
-    def _piece_violation(self, z: Zone, piece: LinePiece, tool_length: Fraction) -> list[ParamRange]:
+    def _piece_violation(self, z: Zone, piece: LinePiece, tool_length: Fraction) -> list[ex.ParamRange]:
         """``ex.line_violation`` of ``z`` on ``piece``, kept for the pieces of the last few segments: a violating
         segment asks it of each piece up to four times (its decision, its first exit, its witness, its depth),
         and against a table of thousands of regions one answer costs as much as the rest of the segment."""
