@@ -356,7 +356,8 @@ def cpu_rss_of(cmd: list[str], env: dict | None = None) -> tuple[float, int, int
 
 #: The classes ``--scaling`` measures: (name, module, generator call with ``{n}``, dialect).  Each generator
 #: writes about ``n`` lines, or about ``n`` executed lines for the loops (their iterations are bounded by
-#: ``--max-iterations`` above any size).
+#: ``--max-iterations`` above any size).  Each runs against its dialect's box, or the machine of
+#: :data:`SCALING_MACHINES` (issue 36's zone rows).
 SCALING_CLASSES = (
     ("CAM G1", "bench_gcode", "cam_program({n})", "linuxcnc"),
     ("expression every line", "bench_gcode", "expr_program({n})", "linuxcnc"),
@@ -372,7 +373,15 @@ SCALING_CLASSES = (
     ("Fanuc G65 call loop", "bench_fanuc", "call_program({n})", "fanuc"),
     ("Fanuc M98 call loop", "bench_fanuc", "subprogram_program({n})", "fanuc"),
     ("Fanuc G81 hole list", "bench_fanuc", "holes_program({n})", "fanuc"),
+    ("200-vertex polygon zone", "bench_zones", "polygon_walk({n})", "linuxcnc"),
+    ("4,096-region table", "bench_zones", "table_walk({n})", "linuxcnc"),
 )
+
+#: The machine file text of a class that is not checked against its dialect's box, by class name.
+SCALING_MACHINES = {
+    "200-vertex polygon zone": lambda: __import__("bench_zones").polygon_machine(200),
+    "4,096-region table": lambda: __import__("bench_zones").table_machine(4096),
+}
 
 
 def scaling(sizes: list[int], repeat: int, env: dict, only: str = "") -> None:
@@ -389,9 +398,10 @@ def scaling(sizes: list[int], repeat: int, env: dict, only: str = "") -> None:
         for name, module, call, dialect in SCALING_CLASSES:
             if only and only.lower() not in name.lower():
                 continue
-            machine = d / f"box_{dialect}.toml"
+            machine = d / f"machine_{len(summary)}.toml"
+            zones = SCALING_MACHINES.get(name)
             # a box the 10M-line CAM walk stays in (the default box is left after about 4M lines)
-            machine.write_text(peer_box(dialect, "900000"))
+            machine.write_text(zones() if zones else peer_box(dialect, "900000"))
             warm = d / "warm.nc"  # the machine file's cache entry: every size is a user's second run
             warm.write_text("G0 X1. Y1.\nM30\n")
             subprocess.run([sys.executable, "-m", "nczones", "verify", str(warm), "--machine", str(machine)], env=env,

@@ -32,6 +32,7 @@ import random
 import subprocess
 import sys
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -94,13 +95,23 @@ vertices = [
 """
 
 
-def table_program(n: int, path: Path) -> None:
+def table_lines(n: int) -> Iterator[str]:
+    """The lines of :func:`table_program`: ``n`` moves across the whole table, then a program end."""
     rnd = random.Random(0)
+    yield "G21 G90 G17\nG1 F1000\n"
+    for _ in range(n):
+        yield f"X{rnd.randint(1000, 3999000) / 1000:.3f} Y{rnd.randint(0, 299000) / 1000:.3f}\n"
+    yield "M2\n"  # a program end: rs274 (bench_peers) ends without an error
+
+
+def table_program(n: int, path: Path) -> None:
     with path.open("w") as fh:
-        fh.write("G21 G90 G17\nG1 F1000\n")
-        for _ in range(n):
-            fh.write(f"X{rnd.randint(1000, 3999000) / 1000:.3f} Y{rnd.randint(0, 299000) / 1000:.3f}\n")
-        fh.write("M2\n")  # a program end: rs274 (bench_peers) ends without an error
+        fh.writelines(table_lines(n))
+
+
+def table_walk(n: int) -> str:
+    """:func:`table_program`'s text (bench_peers' stepped-table class)."""
+    return "".join(table_lines(n))
 
 
 def inner_radius(n: int) -> float:
@@ -114,22 +125,31 @@ def inner_radius(n: int) -> float:
     return best
 
 
-def polygon_program(n: int, path: Path, limit: float) -> None:
+def polygon_lines(n: int, limit: float) -> Iterator[str]:
     """Short moves (at most 2 long) between radius 60 and ``limit``: a random walk along the outline."""
     rnd = random.Random(0)
+    yield "G21 G90 G17\nG1 F1000\nX80 Y0\n"
+    x, y = 80.0, 0.0
+    for _ in range(n - 1):
+        for _ in range(100):
+            nx, ny = x + rnd.uniform(-2, 2), y + rnd.uniform(-2, 2)
+            if 60 < math.hypot(nx, ny) < limit:
+                break
+        else:
+            nx, ny = 80.0, 0.0
+        x, y = nx, ny
+        yield f"X{x:.3f} Y{y:.3f}\n"
+    yield "M2\n"  # a program end: rs274 (bench_peers) ends without an error
+
+
+def polygon_program(n: int, path: Path, limit: float) -> None:
     with path.open("w") as fh:
-        fh.write("G21 G90 G17\nG1 F1000\nX80 Y0\n")
-        x, y = 80.0, 0.0
-        for _ in range(n - 1):
-            for _ in range(100):
-                nx, ny = x + rnd.uniform(-2, 2), y + rnd.uniform(-2, 2)
-                if 60 < math.hypot(nx, ny) < limit:
-                    break
-            else:
-                nx, ny = 80.0, 0.0
-            x, y = nx, ny
-            fh.write(f"X{x:.3f} Y{y:.3f}\n")
-        fh.write("M2\n")  # a program end: rs274 (bench_peers) ends without an error
+        fh.writelines(polygon_lines(n, limit))
+
+
+def polygon_walk(n: int) -> str:
+    """:func:`polygon_program`'s text 2.5 mm inside the 200-vertex outline (bench_peers' polygon class)."""
+    return "".join(polygon_lines(n, inner_radius(200) - 2.5))
 
 
 def case(kind: str, machine_path: str, program: str, z3_sample: int) -> None:

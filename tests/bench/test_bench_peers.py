@@ -91,3 +91,12 @@ def test_the_zone_rows_run_on_their_own_machines(tmp_path):
             run = subprocess.run(["rs274", "-g", str(path), "/dev/null"], capture_output=True, text=True,
                                  env={"HOME": str(tmp_path), "PATH": "/usr/bin:/bin"})
             assert run.returncode == 0, run.stderr
+
+
+def test_every_scaling_machine_names_a_class_and_loads():
+    from nczones.machine import parse_machine
+
+    names = {c[0] for c in bench_peers.SCALING_CLASSES}
+    assert set(bench_peers.SCALING_MACHINES) <= names and len(bench_peers.SCALING_MACHINES) == 2
+    for make in bench_peers.SCALING_MACHINES.values():
+        assert parse_machine(make()).allowed.zones
