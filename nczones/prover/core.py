@@ -1219,6 +1219,18 @@ def prove(motion: Iterable[Segment | MotionChunk], machine: Machine, options: Ve
                            limits=options.run_limits(), profile=profile)
 
 
+def _deepen(violations: list[Violation], block: int, found: Violation, known: dict[int, Fraction]) -> None:
+    """A later violation ``found`` of ``block``, already reported: the report's depth raised when ``found`` is
+    deeper (its exactness then both's), and the prover told (:attr:`Prover.known_depth`)."""
+    old = next(i for i, v in enumerate(violations) if v.block == block)
+    if found.depth > violations[old].depth:
+        from dataclasses import replace
+
+        violations[old] = replace(violations[old], depth=found.depth,
+                                  depth_exact=violations[old].depth_exact and found.depth_exact)
+        known[block] = found.depth
+
+
 def verify_segments(
     segments: Iterable[Segment | MotionChunk],
     machine: Machine,
@@ -1349,13 +1361,7 @@ def verify_segments(
             engines.setdefault(seg.block, out.engine)
         if out.violation is not None:
             if seg.block in seen_blocks:
-                old = next(i for i, v in enumerate(violations) if v.block == seg.block)
-                if out.violation.depth > violations[old].depth:
-                    from dataclasses import replace
-
-                    violations[old] = replace(violations[old], depth=out.violation.depth,
-                                              depth_exact=violations[old].depth_exact and out.violation.depth_exact)
-                    prover.known_depth[seg.block] = out.violation.depth
+                _deepen(violations, seg.block, out.violation, prover.known_depth)
                 return True
             if len(violations) >= max_violations:
                 return False

@@ -640,6 +640,8 @@ def line_depth_bound(zone: Zone, p0: Sequence[Fraction], p1: Sequence[Fraction],
 LINE_DEPTH_BOUND: KindTable[Callable[[Any], bool]] = KindTable("prover.exact.line_depth_convex",
                                                                fallback=lambda z: False)
 LINE_DEPTH_BOUND.set(BoxZone, lambda z: not z.forbid)
+LINE_DEPTH_BOUND.set(SteppedZone, lambda z: False)  # a distance to a union of rectangles: not convex
+LINE_DEPTH_BOUND.set(PolygonZone, lambda z: False)
 
 
 def _breakpoints(lines: Sequence[tuple[Fraction, Fraction]], max_candidates: int) -> tuple[set[Fraction], bool]:
