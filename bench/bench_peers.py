@@ -45,7 +45,8 @@ user types), not ``python -m nczones`` (whose :mod:`runpy` a user does not run).
 Ratios are taken within the same run: ``verify / rs274`` where rs274 ran,
 and ``verify / regex`` always.  Programs: generated G1 lines (``--lines`` and
 ``--small``), an expression on every line (``--small``), R-format arcs (``--small`` lines of
-``G2``/``G3 X.. Y.. R..``, ``bench_gcode.rarc_program``; LinuxCNC, and Fanuc without an rs274 column), stellabee1.ngc with
+``G2``/``G3 X.. Y.. R..``, ``bench_gcode.rarc_program``; LinuxCNC, and Fanuc without an rs274 column), I/J arcs
+(``--small`` lines, ``bench_gcode.ijarc_program``), stellabee1.ngc with
 ``--arc-tolerance linuxcnc``, the corpus's ``--corpus`` largest LinuxCNC
 programs, and generated Fanuc Custom Macro B loops (a WHILE loop, a G65 call per iteration, an M98 call
 per iteration; rs274's column, marked ``*``, is rs274 on the LinuxCNC equivalent: the o-word loop, a sub called
@@ -196,6 +197,7 @@ def programs(a, d: Path) -> list[tuple[str, Path, str, str]]:
     gen(f"G1, {a.small:,} lines", bench_gcode.cam_program(a.small))
     gen(f"an expression on every line, {a.small:,}", bench_gcode.expr_program(a.small))
     gen(f"R-format arcs, {a.small:,} lines", bench_gcode.rarc_program(a.small))
+    gen(f"I/J arcs, {a.small:,} lines", bench_gcode.ijarc_program(a.small))
     gen(f"R-format arcs, Fanuc, {a.small:,} lines", bench_gcode.rarc_program(a.small, dialect="fanuc"), "fanuc",
         peer=bench_gcode.rarc_program(a.small))  # the same arcs in LinuxCNC's words
     if STELLABEE.is_file():

@@ -100,3 +100,16 @@ def test_every_scaling_machine_names_a_class_and_loads():
     assert set(bench_peers.SCALING_MACHINES) <= names and len(bench_peers.SCALING_MACHINES) == 2
     for make in bench_peers.SCALING_MACHINES.values():
         assert parse_machine(make()).allowed.zones
+
+
+def test_the_table_has_every_class_of_issue_36(tmp_path):
+    """The rows issue 36's table names (beside rs274): G1, an expression on every line, R-format and I/J arcs,
+    the loops and calls, the zone rows."""
+    from argparse import Namespace
+
+    a = Namespace(skip_large=True, small=300, macro=300, corpus=0, lines=0)
+    names = [r[0] for r in bench_peers.programs(a, tmp_path)]
+    for start in ("G1,", "an expression on every line", "R-format arcs,", "I/J arcs,", "R-format arcs, Fanuc",
+                  "Fanuc Macro B loop", "Fanuc G65 call", "LinuxCNC o-word loop", "200-vertex polygon zone",
+                  "4,096-region stepped table"):
+        assert any(n.startswith(start) for n in names), start
